@@ -1,0 +1,21 @@
+#pragma once
+#include <cstddef>
+#include <span>
+#include <vector>
+
+namespace sph {
+
+// Interaction partners of every particle in compressed rows: the neighbours of i are
+// j[offset[i]] .. j[offset[i+1]-1]. Lists are full (j in list(i) <=> i in list(j)); i itself
+// is not listed, so self contributions (e.g. m_i W_ii in (27)) are added explicitly.
+struct NeighbourList {
+  std::vector<std::size_t> offset;
+  std::vector<int> j;
+
+  std::span<const int> of(std::size_t i) const {
+    return {j.data() + offset[i], j.data() + offset[i + 1]};
+  }
+  std::size_t pairs() const { return j.size(); }
+};
+
+}  // namespace sph

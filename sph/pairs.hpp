@@ -1,0 +1,29 @@
+#pragma once
+#include <cstddef>
+#include <vector>
+
+#include "sph/box.hpp"
+#include "sph/neighbour_list.hpp"
+
+namespace sph {
+
+// Symmetric smoothing length of a pair (errata, 9.4.4): h_ij = (h_i + h_j) / 2.
+inline double h_ij(double hi, double hj) { return 0.5 * (hi + hj); }
+
+// Calls f(i, j, r_ij, |r_ij|, h_ij) for every interacting pair, r_ij = r_i - r_j at the
+// nearest image. Each i is handled by one thread and f may only write to i's own outputs,
+// so the result is independent of the thread count.
+template <int D, class F>
+void for_each_pair(const std::vector<Vec<D>>& x, const std::vector<double>& h,
+                   const NeighbourList& nl, const Box<D>& box, F&& f) {
+  const Vec<D> L = box.length(), wrap = box.wrap_factor();
+  const std::size_t n = x.size();
+#pragma omp parallel for schedule(dynamic, 256)
+  for (std::size_t i = 0; i < n; ++i)
+    for (int j : nl.of(i)) {
+      const Vec<D> rij = min_image<D>(x[i] - x[j], L, wrap);
+      f(i, j, rij, rij.norm(), h_ij(h[i], h[j]));
+    }
+}
+
+}  // namespace sph

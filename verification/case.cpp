@@ -1,0 +1,48 @@
+#include "verification/case.hpp"
+
+#include <algorithm>
+#include <chrono>
+
+namespace sphv {
+
+namespace {
+std::vector<Case>& registry() {
+  static std::vector<Case> cases;
+  return cases;
+}
+}  // namespace
+
+Registration::Registration(Case c) {
+  auto& r = registry();
+  r.push_back(std::move(c));
+  std::sort(r.begin(), r.end(), [](const Case& a, const Case& b) { return a.name < b.name; });
+}
+
+const std::vector<Case>& catalogue() { return registry(); }
+
+const Case& find_case(const std::string& name) {
+  for (const auto& c : registry())
+    if (c.name == name) return c;
+  throw InputError("unknown case '" + name + "' (see 'sphv list')");
+}
+
+Params Case::parse(const std::vector<std::string>& settings) const {
+  Params p(name, params, settings);
+  if (validate) validate(p);
+  return p;
+}
+
+bool Case::has_tag(const std::string& t) const {
+  return std::find(tags.begin(), tags.end(), t) != tags.end();
+}
+
+Result run_case(const Case& c, const Params& p) {
+  const auto t0 = std::chrono::steady_clock::now();
+  Result r = c.run(p);
+  r.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  r.case_name = c.name;
+  r.params = p.to_json();
+  return r;
+}
+
+}  // namespace sphv

@@ -1,0 +1,177 @@
+// sphv: the command line of the verification harness (list, info, run, sweep, verify).
+#include <omp.h>
+
+#include <CLI/CLI.hpp>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+#include "verification/case.hpp"
+#include "verification/sweep.hpp"
+
+namespace fs = std::filesystem;
+using namespace sphv;
+
+namespace {
+
+std::string join(const std::vector<std::string>& v, const char* sep) {
+  std::string s;
+  for (const auto& x : v) s += (s.empty() ? "" : sep) + x;
+  return s;
+}
+
+void list_cases() {
+  for (const auto& c : catalogue())
+    std::printf("%-14s %-55s [%s]\n%14s n = %s\n", c.name.c_str(), c.summary.c_str(),
+                join(c.tags, ",").c_str(), "", c.n_counts.c_str());
+}
+
+void info(const Case& c) {
+  std::printf("%s: %s\ntags: %s\nn counts: %s\n\nparameters (sphv run %s --set key=value):\n",
+              c.name.c_str(), c.summary.c_str(), join(c.tags, ",").c_str(), c.n_counts.c_str(),
+              c.name.c_str());
+  for (const auto& p : c.params) {
+    std::string help = p.help;
+    if (!p.choices.empty()) help += " (" + join(p.choices, "|") + ")";
+    std::printf("  %-12s %-12s %s\n", p.name.c_str(), p.default_value.c_str(), help.c_str());
+  }
+  std::string lv, gl;
+  for (long n : c.levels) lv += (lv.empty() ? "" : ",") + std::to_string(n);
+  for (long n : c.gate_levels) gl += (gl.empty() ? "" : ",") + std::to_string(n);
+  std::printf("\ndefault sweep levels: %s\ngate levels (ctest): %s\nexpected orders (defaults):", lv.c_str(),
+              gl.c_str());
+  if (c.expected_order)
+    for (const auto& [k, v] : c.expected_order(c.parse({}))) std::printf(" %s=%g", k.c_str(), v);
+  std::printf("\n  %s\n", c.expected_why.c_str());
+}
+
+std::string summary_line(const Result& r) {
+  std::string s = r.case_name + " n=" + std::to_string(r.params.value("n", 0L)) + ": " +
+                  std::to_string(r.n_particles) + " particles, " + std::to_string(r.wall_time_s) + " s";
+  for (const auto& [k, v] : r.errors) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, ", %s=%.3e", k.c_str(), v);
+    s += buf;
+  }
+  return s + ", verdict: " + r.verdict;
+}
+
+// The error a summary shows first: the first one with an expected order, else the first.
+std::string headline_error(const Sweep& s) {
+  if (!s.expected_order.empty()) return s.expected_order.begin()->first;
+  return s.runs.empty() || s.runs.back().errors.empty() ? "" : s.runs.back().errors.begin()->first;
+}
+
+int verify(const fs::path& out, const std::vector<std::string>& only) {
+  std::printf("%-14s %-22s %-12s %-11s %8s %9s  %s\n", "case", "variant", "error", "finest", "observed",
+              "expected", "wall s   verdict");
+  int failed = 0;
+  nlohmann::json summary = nlohmann::json::array();
+  for (const auto& c : catalogue()) {
+    if (!c.has_tag("gate") || (!only.empty() && std::find(only.begin(), only.end(), c.name) == only.end()))
+      continue;
+    for (const auto& settings : c.variants) {
+      const Params p = c.parse(settings);
+      const std::string label = p.non_defaults().empty() ? "default" : join(p.non_defaults(), ",");
+      Sweep s = run_sweep(c, c.levels, settings, out / c.name / label);
+      const std::string e = headline_error(s);
+      const double fine = s.runs.back().errors.count(e) ? s.runs.back().errors.at(e) : NAN;
+      const double obs = s.observed_order.count(e) ? s.observed_order.at(e) : NAN;
+      const double exp = s.expected_order.count(e) ? s.expected_order.at(e) : NAN;
+      std::string verdict = s.passed() ? "pass" : "FAIL";
+      for (const auto& ch : s.checks)
+        if (!ch.pass()) verdict += " [" + ch.name + "=" + std::to_string(ch.value) + "]";
+      for (const auto& r : s.runs)
+        if (r.verdict != "ok" && r.verdict.rfind("stable", 0) != 0) verdict += " (" + r.verdict + ")";
+      failed += !s.passed();
+      std::printf("%-14s %-22s %-12s %-11.3e %8.2f %9.2f %8.2f  %s\n", c.name.c_str(), label.c_str(),
+                  e.c_str(), fine, obs, exp, s.wall_time_s, verdict.c_str());
+      std::fflush(stdout);
+      summary.push_back({{"case", c.name}, {"variant", label}, {"error", e},
+                         {"finest", std::isfinite(fine) ? nlohmann::json(fine) : nlohmann::json()},
+                         {"observed_order", std::isfinite(obs) ? nlohmann::json(obs) : nlohmann::json()},
+                         {"expected_order", std::isfinite(exp) ? nlohmann::json(exp) : nlohmann::json()},
+                         {"wall_time_s", s.wall_time_s}, {"passed", s.passed()}});
+    }
+  }
+  write_atomically(out / "summary.json", summary.dump(1) + "\n");
+  std::printf("%s: %d failing gate sweep(s); results in %s\n", failed ? "FAIL" : "PASS", failed,
+              out.string().c_str());
+  return failed ? 1 : 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"sphv: verification and convergence harness for a reference SPH implementation"};
+  app.require_subcommand(1);
+  int threads = 0;
+  app.add_option("--threads", threads, "OpenMP threads (default: all cores)")->check(CLI::PositiveNumber);
+
+  auto* list = app.add_subcommand("list", "every case, what its n counts, and its tags");
+  auto* info_cmd = app.add_subcommand("info", "a case's parameters with defaults, levels and expected orders");
+  std::string case_name;
+  info_cmd->add_option("case", case_name, "case name")->required();
+
+  std::vector<std::string> settings;
+  fs::path out;
+  auto* run = app.add_subcommand("run", "run one case: writes DIR/result.json (and particles.csv)");
+  run->add_option("case", case_name, "case name (see 'sphv list'; parameters: 'sphv info CASE')")->required();
+  run->add_option("--set", settings, "parameter as key=value (repeatable)")->take_all();
+  run->add_option("--out", out, "output directory (default runs/CASE)");
+
+  std::vector<long> levels;
+  auto* sweep = app.add_subcommand("sweep", "run a case at several resolutions: writes DIR/sweep.json");
+  sweep->add_option("case", case_name, "case name")->required();
+  sweep->add_option("--levels", levels, "values of n, e.g. 16,32,64 (default: the case's)")->delimiter(',');
+  sweep->add_option("--set", settings, "parameter as key=value (repeatable)")->take_all();
+  sweep->add_option("--out", out, "output directory (default runs/CASE-sweep)");
+
+  std::vector<std::string> only;
+  auto* verify_cmd = app.add_subcommand("verify", "the default catalogue: sweeps, gates, summary table");
+  verify_cmd->add_option("--out", out, "output directory (default runs/verify)");
+  verify_cmd->add_option("--cases", only, "only these cases")->delimiter(',');
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::fprintf(stderr, "sphv: error: %s\n", e.what());
+    return 2;
+  }
+  if (threads > 0) omp_set_num_threads(threads);
+
+  try {
+    if (*list) list_cases();
+    if (*info_cmd) info(find_case(case_name));
+    if (*run) {
+      const Case& c = find_case(case_name);
+      const Params p = c.parse(settings);
+      const Result r = run_case(c, p);
+      write_result(r, out.empty() ? fs::path("runs") / c.name : out);
+      std::printf("%s\n", summary_line(r).c_str());
+    }
+    if (*sweep) {
+      const Case& c = find_case(case_name);
+      const Sweep s = run_sweep(c, levels.empty() ? c.levels : levels, settings,
+                                out.empty() ? fs::path("runs") / (c.name + "-sweep") : out,
+                                [](const Result& r) { std::printf("%s\n", summary_line(r).c_str()); });
+      for (const auto& [k, v] : s.observed_order)
+        std::printf("observed order %-10s %6.2f  (expected %s)\n", k.c_str(), v,
+                    s.expected_order.count(k) ? std::to_string(s.expected_order.at(k)).c_str() : "-");
+      for (const auto& ch : s.checks)
+        std::printf("gate %-28s %-10.4g in [%g, %g]: %s\n", ch.name.c_str(), ch.value, ch.lo, ch.hi,
+                    ch.pass() ? "pass" : "FAIL");
+    }
+    if (*verify_cmd) return verify(out.empty() ? fs::path("runs/verify") : out, only);
+  } catch (const InputError& e) {
+    std::fprintf(stderr, "sphv: error: %s\n", e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "sphv: error: %s\n", e.what());
+    return 3;
+  }
+  return 0;
+}

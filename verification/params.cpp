@@ -1,0 +1,139 @@
+#include "verification/params.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <sstream>
+
+namespace sphv {
+
+ParamSpec integer_param(std::string name, long def, std::string help, std::optional<double> gt) {
+  return {std::move(name), ParamSpec::Kind::Integer, std::to_string(def), std::move(help), gt};
+}
+
+ParamSpec real_param(std::string name, double def, std::string help, std::optional<double> gt) {
+  std::ostringstream s;
+  s << def;
+  return {std::move(name), ParamSpec::Kind::Real, s.str(), std::move(help), gt};
+}
+
+ParamSpec choice_param(std::string name, std::string def, std::string help,
+                       std::vector<std::string> choices) {
+  return {std::move(name), ParamSpec::Kind::Text, std::move(def), std::move(help),
+          std::nullopt, std::nullopt, std::move(choices)};
+}
+
+namespace {
+
+template <class T>
+bool parse_number(const std::string& s, T& out) {
+  const char* end = s.data() + s.size();
+  auto [ptr, ec] = std::from_chars(s.data(), end, out);
+  return ec == std::errc() && ptr == end && !s.empty();
+}
+
+std::string known_names(const std::vector<ParamSpec>& specs) {
+  std::string out;
+  for (const auto& s : specs) out += (out.empty() ? "" : ", ") + s.name;
+  return out;
+}
+
+}  // namespace
+
+Params::Params(std::string case_name, std::vector<ParamSpec> specs,
+               const std::vector<std::string>& settings)
+    : case_name_(std::move(case_name)), specs_(std::move(specs)) {
+  for (const auto& s : specs_) set(s.name, s.default_value);
+  for (const auto& kv : settings) {
+    const auto eq = kv.find('=');
+    if (eq == std::string::npos || eq == 0)
+      throw InputError("malformed setting '" + kv + "': expected key=value");
+    set(kv.substr(0, eq), kv.substr(eq + 1));
+  }
+}
+
+const ParamSpec& Params::spec(const std::string& key) const {
+  for (const auto& s : specs_)
+    if (s.name == key) return s;
+  throw InputError("unknown parameter '" + key + "' for case '" + case_name_ +
+                   "' (known: " + known_names(specs_) + ")");
+}
+
+void Params::set(const std::string& key, const std::string& value) {
+  const ParamSpec& s = spec(key);
+  double number = 0.0;
+  if (s.kind == ParamSpec::Kind::Integer) {
+    long v = 0;
+    if (!parse_number(value, v))
+      throw InputError("parameter " + key + ": '" + value + "' is not an integer");
+    number = static_cast<double>(v);
+  } else if (s.kind == ParamSpec::Kind::Real) {
+    if (!parse_number(value, number) || !std::isfinite(number))
+      throw InputError("parameter " + key + ": '" + value + "' is not a finite number");
+  } else if (!s.choices.empty()) {
+    bool ok = false;
+    for (const auto& c : s.choices) ok = ok || c == value;
+    if (!ok) {
+      std::string list;
+      for (const auto& c : s.choices) list += (list.empty() ? "" : ", ") + c;
+      throw InputError("parameter " + key + ": '" + value + "' is not one of " + list);
+    }
+  }
+  if (s.kind != ParamSpec::Kind::Text) {
+    std::ostringstream bound;
+    if (s.greater_than && !(number > *s.greater_than)) {
+      bound << *s.greater_than;
+      throw InputError("parameter " + key + " must be > " + bound.str() + ", got " + value);
+    }
+    if (s.at_least && !(number >= *s.at_least)) {
+      bound << *s.at_least;
+      throw InputError("parameter " + key + " must be >= " + bound.str() + ", got " + value);
+    }
+  }
+  values_[key] = value;
+}
+
+long Params::integer(const std::string& key) const {
+  long v = 0;
+  parse_number(values_.at(spec(key).name), v);
+  return v;
+}
+
+double Params::real(const std::string& key) const {
+  double v = 0;
+  parse_number(values_.at(spec(key).name), v);
+  return v;
+}
+
+const std::string& Params::text(const std::string& key) const { return values_.at(spec(key).name); }
+
+Params Params::with(const std::string& key, const std::string& value) const {
+  Params copy = *this;
+  copy.set(key, value);
+  return copy;
+}
+
+std::vector<std::string> Params::non_defaults() const {
+  std::vector<std::string> out;
+  for (const auto& s : specs_) {
+    const std::string& v = values_.at(s.name);
+    bool same = v == s.default_value;
+    if (s.kind == ParamSpec::Kind::Real) {
+      double a = 0, b = 0;
+      same = parse_number(v, a) && parse_number(s.default_value, b) && a == b;
+    }
+    if (!same && s.name != "n") out.push_back(s.name + "=" + v);
+  }
+  return out;
+}
+
+nlohmann::json Params::to_json() const {
+  nlohmann::json j = nlohmann::json::object();
+  for (const auto& s : specs_) {
+    if (s.kind == ParamSpec::Kind::Integer) j[s.name] = integer(s.name);
+    else if (s.kind == ParamSpec::Kind::Real) j[s.name] = real(s.name);
+    else j[s.name] = text(s.name);
+  }
+  return j;
+}
+
+}  // namespace sphv

@@ -1,0 +1,56 @@
+#pragma once
+#include <map>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace sphv {
+
+// Bad input from the user (unknown case or parameter, malformed or out-of-range value,
+// unreadable file). main() prints it as one line and exits non-zero.
+struct InputError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// One parameter a case accepts, with its default and the range it must lie in.
+struct ParamSpec {
+  enum class Kind { Integer, Real, Text };
+  std::string name;
+  Kind kind;
+  std::string default_value;
+  std::string help;
+  std::optional<double> greater_than = std::nullopt;  // strict lower bound (n > 0, h > 0, gamma > 1)
+  std::optional<double> at_least = std::nullopt;      // inclusive lower bound
+  std::vector<std::string> choices = {};              // allowed words for Text
+};
+
+ParamSpec integer_param(std::string name, long def, std::string help, std::optional<double> gt = 0.0);
+ParamSpec real_param(std::string name, double def, std::string help, std::optional<double> gt = std::nullopt);
+ParamSpec choice_param(std::string name, std::string def, std::string help, std::vector<std::string> choices);
+
+// Validated parameter values of one run: defaults overridden by key=value settings.
+class Params {
+ public:
+  Params(std::string case_name, std::vector<ParamSpec> specs,
+         const std::vector<std::string>& settings = {});
+
+  long integer(const std::string& key) const;
+  double real(const std::string& key) const;
+  const std::string& text(const std::string& key) const;
+  Params with(const std::string& key, const std::string& value) const;
+  // The settings that differ from the defaults, as "key=value" (names a variant).
+  std::vector<std::string> non_defaults() const;
+  nlohmann::json to_json() const;
+
+ private:
+  const ParamSpec& spec(const std::string& key) const;
+  void set(const std::string& key, const std::string& value);
+  std::string case_name_;
+  std::vector<ParamSpec> specs_;
+  std::map<std::string, std::string> values_;
+};
+
+}  // namespace sphv

@@ -1,0 +1,59 @@
+#pragma once
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace sphv {
+
+// Named columns of equal length, written as CSV with a header row (particles.csv).
+struct Table {
+  std::vector<std::string> names;
+  std::vector<std::vector<double>> columns;
+  void add(std::string name, std::vector<double> column) {
+    names.push_back(std::move(name));
+    columns.push_back(std::move(column));
+  }
+  bool empty() const { return names.empty(); }
+};
+
+// A figure the report draws from a run (profiles, error against a parameter, ...):
+// series of points or lines on shared axes. The report script knows nothing case-specific.
+struct Series {
+  std::string label;
+  std::vector<double> x, y;
+  std::string style = "line";  // "line", "points" or "dashed"
+};
+struct Figure {
+  std::string name, title, xlabel, ylabel;
+  std::string xscale = "linear", yscale = "linear";
+  std::vector<Series> series;
+};
+
+// What one run of a case produced; serialised as result.json.
+struct Result {
+  std::string case_name;
+  nlohmann::json params = nlohmann::json::object();
+  std::size_t n_particles = 0;
+  double wall_time_s = 0.0;
+  std::map<std::string, double> errors;       // against the independent reference
+  std::map<std::string, double> functionals;  // converging outputs (for Roache's GCI)
+  std::string verdict = "ok";                 // "ok", or what went bad, where and when
+  std::vector<Figure> figures;
+  nlohmann::json extra = nlohmann::json::object();  // case-specific detail
+  Table particles;                                  // empty when the case has none
+};
+
+nlohmann::json provenance();
+nlohmann::json to_json(const Figure& f);
+nlohmann::json to_json(const Result& r);
+
+// Writes text to path through a temporary file and a rename: a reader never sees half a file
+// and an earlier file survives a failed write.
+void write_atomically(const std::filesystem::path& path, const std::string& text);
+void write_result(const Result& r, const std::filesystem::path& dir);
+std::string csv(const Table& t);
+
+}  // namespace sphv
