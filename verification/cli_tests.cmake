@@ -1,1 +1,24 @@
-# Command-line behaviour: bad input is refused with one clear line and a non-zero exit.
+# Command-line behaviour: bad input is refused with one clear "sphv: error:" line and a
+# non-zero exit; good input writes its files.
+function(sphv_refuses name)
+  add_test(NAME cli_refuses_${name} COMMAND sphv ${ARGN})
+  set_tests_properties(cli_refuses_${name} PROPERTIES WILL_FAIL TRUE)
+  add_test(NAME cli_message_${name} COMMAND sphv ${ARGN})
+  set_tests_properties(cli_message_${name} PROPERTIES PASS_REGULAR_EXPRESSION "^sphv: error: [^\n]+\n?$")
+endfunction()
+
+sphv_refuses(unknown_case run no_such_case)
+sphv_refuses(unknown_parameter run kernel --set nope=1)
+sphv_refuses(malformed_setting run kernel --set n)
+sphv_refuses(non_integer_n run kernel --set n=ten)
+sphv_refuses(zero_n run kernel --set n=0)
+sphv_refuses(negative_n sweep interpolation --levels 16,-32)
+sphv_refuses(negative_h run kernel --set h=-0.1)
+sphv_refuses(nan_h run kernel --set h=nan)
+sphv_refuses(bad_dim run interpolation --set dim=4)
+sphv_refuses(unknown_option run kernel --bogus)
+
+add_test(NAME cli_list COMMAND sphv list)
+set_tests_properties(cli_list PROPERTIES PASS_REGULAR_EXPRESSION "interpolation(.|\n)*kernel")
+add_test(NAME cli_run_writes_result COMMAND sphv run interpolation --set n=16 --out ${CMAKE_BINARY_DIR}/cli_run)
+set_tests_properties(cli_run_writes_result PROPERTIES PASS_REGULAR_EXPRESSION "verdict: ok")

@@ -74,7 +74,7 @@ int verify(const fs::path& out, const std::vector<std::string>& only) {
     for (const auto& settings : c.variants) {
       const Params p = c.parse(settings);
       const std::string label = p.non_defaults().empty() ? "default" : join(p.non_defaults(), ",");
-      Sweep s = run_sweep(c, c.levels, settings, out / c.name / label);
+      Sweep s = run_sweep(c, c.sweep_levels(settings, false), settings, out / c.name / label);
       const std::string e = headline_error(s);
       const double fine = s.runs.back().errors.count(e) ? s.runs.back().errors.at(e) : NAN;
       const double obs = s.observed_order.count(e) ? s.observed_order.at(e) : NAN;
@@ -155,7 +155,7 @@ int main(int argc, char** argv) {
     }
     if (*sweep) {
       const Case& c = find_case(case_name);
-      const Sweep s = run_sweep(c, levels.empty() ? c.levels : levels, settings,
+      const Sweep s = run_sweep(c, levels.empty() ? c.sweep_levels(settings, false) : levels, settings,
                                 out.empty() ? fs::path("runs") / (c.name + "-sweep") : out,
                                 [](const Result& r) { std::printf("%s\n", summary_line(r).c_str()); });
       for (const auto& [k, v] : s.observed_order)
