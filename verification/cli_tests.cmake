@@ -29,3 +29,20 @@ set_tests_properties(cli_sweep_writes_sweep PROPERTIES FIXTURES_SETUP sweep_outp
 add_test(NAME report_script COMMAND bash -c
   "py=$(bash ${CMAKE_SOURCE_DIR}/scripts/find-python.sh) && $py ${CMAKE_SOURCE_DIR}/scripts/report.py ${CMAKE_BINARY_DIR}/cli_sweep --name ctest --reports ${CMAKE_BINARY_DIR}/reports && test -s ${CMAKE_BINARY_DIR}/reports/ctest/kernel_0_convergence.pdf")
 set_tests_properties(report_script PROPERTIES FIXTURES_REQUIRED sweep_output)
+
+# Sweeps at scale (issue 9): resumable after a kill; the MPI sweep matches the serial one.
+add_test(NAME sweep_resumes_after_kill COMMAND bash ${CMAKE_SOURCE_DIR}/scripts/test-resume.sh $<TARGET_FILE:sphv> ${CMAKE_BINARY_DIR}/resume)
+set_tests_properties(sweep_resumes_after_kill PROPERTIES PASS_REGULAR_EXPRESSION "^PASS" RUN_SERIAL TRUE)
+add_test(NAME sweep_parallel_matches_serial COMMAND bash -c
+  "rm -rf par ser && $<TARGET_FILE:sphv> sweep interpolation --vary dim=1,2 --jobs 2 --out par >/dev/null && $<TARGET_FILE:sphv> sweep interpolation --vary dim=1,2 --jobs 1 --out ser >/dev/null && py=$(bash ${CMAKE_SOURCE_DIR}/scripts/find-python.sh) && $py ${CMAKE_SOURCE_DIR}/scripts/compare-sweeps.py par ser"
+  WORKING_DIRECTORY ${CMAKE_BINARY_DIR})
+set_tests_properties(sweep_parallel_matches_serial PROPERTIES PASS_REGULAR_EXPRESSION "points identical")
+find_program(MPIEXEC_BIN NAMES mpirun mpiexec)
+if(MPI_CXX_FOUND AND MPIEXEC_BIN)
+  add_test(NAME sweep_mpi_matches_serial COMMAND bash -c
+    "rm -rf mpi ser1 && ${MPIEXEC_BIN} --oversubscribe -n 2 $<TARGET_FILE:sphv> --threads 1 sweep interpolation --vary dim=1,2 --out mpi >/dev/null && $<TARGET_FILE:sphv> --threads 1 sweep interpolation --vary dim=1,2 --jobs 1 --out ser1 >/dev/null && py=$(bash ${CMAKE_SOURCE_DIR}/scripts/find-python.sh) && $py ${CMAKE_SOURCE_DIR}/scripts/compare-sweeps.py mpi ser1"
+    WORKING_DIRECTORY ${CMAKE_BINARY_DIR})
+  # OpenMPI refuses root unless told; CI runs as root.
+  set_tests_properties(sweep_mpi_matches_serial PROPERTIES PASS_REGULAR_EXPRESSION "points identical"
+    ENVIRONMENT "OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1;OMPI_MCA_rmaps_base_oversubscribe=1")
+endif()
