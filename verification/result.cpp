@@ -9,10 +9,20 @@
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <thread>
 
 #include "build_info.hpp"
 
 namespace sphv {
+
+namespace {
+std::string cpu_model() {
+  std::ifstream f("/proc/cpuinfo");
+  for (std::string line; std::getline(f, line);)
+    if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
+  return "unknown";
+}
+}  // namespace
 
 nlohmann::json provenance() {
   char host[256] = "unknown";
@@ -23,7 +33,7 @@ nlohmann::json provenance() {
   return {{"git_commit", build::git_commit}, {"compiler", build::compiler},
           {"cxx_flags", build::cxx_flags},   {"build_type", build::build_type},
           {"threads", omp_get_max_threads()}, {"date", date},
-          {"host", host}};
+          {"host", host}, {"cpu", cpu_model()}, {"cores", std::thread::hardware_concurrency()}};
 }
 
 namespace {

@@ -61,6 +61,9 @@ Sweep summarise(const Case& c, const std::vector<std::string>& settings, const s
                 std::vector<Result> runs) {
   Sweep s;
   s.case_name = c.name;
+  s.summary = c.summary;
+  s.n_counts = c.n_counts;
+  s.expected_why = c.expected_why;
   s.levels = levels;
   const Params base = c.parse(settings);
   s.settings = base.non_defaults();
@@ -157,7 +160,8 @@ nlohmann::json to_json(const Sweep& s) {
   for (const auto& c : s.checks)
     checks.push_back({{"name", c.name}, {"value", num(c.value)}, {"lo", num(c.lo)}, {"hi", num(c.hi)},
                       {"why", c.why}, {"pass", c.pass()}});
-  return {{"case", s.case_name}, {"variant", s.variant()}, {"settings", s.settings},
+  return {{"case", s.case_name}, {"summary", s.summary}, {"n_counts", s.n_counts},
+          {"expected_why", s.expected_why}, {"variant", s.variant()}, {"settings", s.settings},
           {"levels", s.levels},  {"runs", runs},           {"observed_order", order},
           {"expected_order", expected}, {"gci", gci},      {"checks", checks},
           {"passed", s.passed()}, {"wall_time_s", s.wall_time_s}};

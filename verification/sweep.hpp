@@ -25,6 +25,7 @@ struct Gci {
 // A case run at several resolutions, with the fitted orders of convergence.
 struct Sweep {
   std::string case_name;
+  std::string summary, n_counts, expected_why;  // from the case, for reports
   std::vector<std::string> settings;  // the variant: settings other than n
   std::vector<long> levels;
   std::vector<Result> runs;
