@@ -22,6 +22,8 @@ void gate(const std::string& name) {
 
 TEST_CASE("gate: laplacian", "[gate][laplacian]") { gate("laplacian"); }
 TEST_CASE("gate: heat", "[gate][heat]") { gate("heat"); }
+TEST_CASE("gate: heat_stability", "[gate][heat]") { gate("heat_stability"); }
+TEST_CASE("gate: heat_stiff", "[gate][heat]") { gate("heat_stiff"); }
 
 TEST_CASE("heat: bad input is refused", "[heat][input]") {
   const auto& c = sphv::find_case("heat");
