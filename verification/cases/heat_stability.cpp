@@ -118,7 +118,7 @@ const Registration reg{Case{
     .gate_levels = {10},
     .expected_order = {},
     .expected_why = "no convergence: the ratio measured / bound is 1 at every n",
-    .variants = {{}, {"dim=2"}, {"dim=3", "steps=200", "hfact_max=3"}, {"method=heun"}, {"form=flux_57_59"}},
+    .variants = {{}, {"dim=2"}, {"dim=3", "steps=150", "hfact_max=2.5"}, {"method=heun"}, {"form=flux_57_59"}},
     .validate = validate,
     .run = run,
     .gates = gates,
