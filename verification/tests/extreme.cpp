@@ -80,3 +80,5 @@ TEST_CASE("noh reference: published post-shock states", "[reference][noh]") {
     CHECK(out.p == 0.0);
   }
 }
+
+TEST_CASE("gate: stability_map_heat", "[gate][extreme]") { gate("stability_map_heat"); }
