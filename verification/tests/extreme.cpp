@@ -82,3 +82,5 @@ TEST_CASE("noh reference: published post-shock states", "[reference][noh]") {
 }
 
 TEST_CASE("gate: stability_map_heat", "[gate][extreme]") { gate("stability_map_heat"); }
+TEST_CASE("gate: sedov", "[gate][extreme][sedov]") { gate("sedov"); }
+TEST_CASE("gate: noh", "[gate][extreme][noh]") { gate("noh"); }
