@@ -44,16 +44,28 @@ void chapter_leapfrog_step(Particles<D>& p, Derivatives<D>& d, double dt, Derivs
   derivs(p, d);  // a(t + dt), needed by the next step
 }
 
-// Kick-drift-kick leapfrog: one evaluation per step, symplectic for conservative forces.
+// Kick-drift-kick leapfrog, one evaluation per step, symplectic for position-dependent forces.
+// Velocity-dependent rates (viscosity, energy, continuity, (53)) are evaluated at v and the
+// scalars predicted to t + dt (as in Phantom), not at their half-step values: with the half-step
+// values the step is only first order in those terms.
 template <int D, class Derivs>
 void kdk_leapfrog_step(Particles<D>& p, Derivatives<D>& d, double dt, Derivs&& derivs) {
   for (std::size_t i = 0; i < p.size(); ++i) {
-    p.v[i] += 0.5 * dt * d.dvdt[i];
-    p.x[i] += dt * p.v[i];
+    p.v[i] += 0.5 * dt * d.dvdt[i];  // v(t + dt/2)
+    p.x[i] += dt * p.v[i];           // r(t + dt)
   }
   kick_scalars(p, d, 0.5 * dt);
-  derivs(p, d);
-  for (std::size_t i = 0; i < p.size(); ++i) p.v[i] += 0.5 * dt * d.dvdt[i];
+  const std::vector<Vec<D>> v_half = p.v;
+  const std::vector<double> u_half = p.u, rho_half = p.rho, h_half = p.h;
+  for (std::size_t i = 0; i < p.size(); ++i) p.v[i] += 0.5 * dt * d.dvdt[i];  // predicted v(t + dt)
+  kick_scalars(p, d, 0.5 * dt);
+  derivs(p, d);  // rates at t + dt
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    p.v[i] = v_half[i] + 0.5 * dt * d.dvdt[i];
+    p.u[i] = u_half[i];
+    p.rho[i] = rho_half[i];
+    p.h[i] = h_half[i];
+  }
   kick_scalars(p, d, 0.5 * dt);
 }
 

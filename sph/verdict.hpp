@@ -8,7 +8,8 @@
 namespace sph {
 
 // The first particle whose state is unphysical: position or velocity not finite, density not
-// positive, pressure or specific internal energy negative, or any of them not finite.
+// positive, pressure or specific internal energy negative, support radius not positive, or any
+// of them not finite.
 struct BadParticle {
   std::size_t particle;
   std::string what;  // e.g. "rho <= 0", "u not finite"
@@ -25,6 +26,8 @@ std::optional<BadParticle> first_bad(const Particles<D>& p) {
     if (p.u[i] < 0.0) return BadParticle{i, "u < 0"};
     if (!std::isfinite(p.p[i])) return BadParticle{i, "p not finite"};
     if (p.p[i] < 0.0) return BadParticle{i, "p < 0"};
+    if (!std::isfinite(p.h[i])) return BadParticle{i, "h not finite"};
+    if (!(p.h[i] > 0.0)) return BadParticle{i, "h <= 0"};
   }
   return std::nullopt;
 }
