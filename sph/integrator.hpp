@@ -54,18 +54,15 @@ void kdk_leapfrog_step(Particles<D>& p, Derivatives<D>& d, double dt, Derivs&& d
     p.v[i] += 0.5 * dt * d.dvdt[i];  // v(t + dt/2)
     p.x[i] += dt * p.v[i];           // r(t + dt)
   }
-  kick_scalars(p, d, 0.5 * dt);
-  const std::vector<Vec<D>> v_half = p.v;
-  const std::vector<double> u_half = p.u, rho_half = p.rho, h_half = p.h;
+  kick_scalars(p, d, 0.5 * dt);      // scalars at t + dt/2
+  const Derivatives<D> at_t = d;
   for (std::size_t i = 0; i < p.size(); ++i) p.v[i] += 0.5 * dt * d.dvdt[i];  // predicted v(t + dt)
-  kick_scalars(p, d, 0.5 * dt);
-  derivs(p, d);  // rates at t + dt
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    p.v[i] = v_half[i] + 0.5 * dt * d.dvdt[i];
-    p.u[i] = u_half[i];
-    p.rho[i] = rho_half[i];
-    p.h[i] = h_half[i];
-  }
+  kick_scalars(p, d, 0.5 * dt);      // predicted scalars at t + dt
+  derivs(p, d);                      // rates at t + dt (may overwrite derived scalars, e.g. rho (27))
+  // Correct the prediction: y(t + dt) = y(t + dt/2) + dt/2 rate(t + dt). Written as a change of
+  // the predicted value so that scalars a scene term sets directly keep the value it set.
+  for (std::size_t i = 0; i < p.size(); ++i) p.v[i] += 0.5 * dt * (d.dvdt[i] - at_t.dvdt[i]);
+  kick_scalars(p, at_t, -0.5 * dt);
   kick_scalars(p, d, 0.5 * dt);
 }
 

@@ -210,13 +210,14 @@ std::vector<Check> tube_gates(const Sweep& s, double l1_max, const std::string& 
     // transverse lattice noise); gate only that the error falls with resolution.
     if (fine.errors.count("L1_rho") && s.runs.front().errors.count("L1_rho"))
       c.push_back({"L1_rho_falls", fine.errors.at("L1_rho") / s.runs.front().errors.at("L1_rho"), 0.0, 0.9,
-                   "finest / coarsest gate level: must fall with resolution (measured 0.64 in 2D, 0.82 in 3D)"});
+                   "finest / coarsest gate level: must fall with resolution (measured 0.64 in 2D, 0.83 in 3D)"});
     return c;
   }
   for (const auto& [name, order] : s.expected_order)
     if (s.observed_order.count(name))
-      // Measured 0.62-0.80 on the gate levels (pre-asymptotic: the start-up error at the contact
-      // decays slowly), 0.73-0.86 on 100..1600; band [0.5, 1.3] around the expected 1.
+      // Measured 0.72-0.88 on the gate levels 200..800 (0.75-0.88 on 100..1600; the local slope
+      // of L1_v and L1_u rises from 0.4 to 1.0 across 100..1600: pre-asymptotic start-up error
+      // at the contact); band [0.5, 1.3] around the expected 1.
       c.push_back({"order_" + name, s.observed_order.at(name), 0.5, 1.3,
                    "discontinuities smeared over a fixed number of particles: first order"});
   return c;
@@ -251,7 +252,7 @@ Case make_case(int dim) {
   c.validate = [](const Params& p) { problem(p); };
   if (dim == 1) {
     c.levels = {100, 200, 400, 800, 1600};
-    c.gate_levels = {100, 200, 400};
+    c.gate_levels = {200, 400, 800};
     c.variants = {{},
                   {"density=continuity33"},
                   {"density=continuity29"},
@@ -273,9 +274,9 @@ Case make_case(int dim) {
     c.run = run<3>;
   }
   c.gates = [dim](const Sweep& s) {
-    // Measured L1(rho) at the finest gate level (1D n = 400: 7.59e-3; 2D n = 100: 1.97e-2;
-    // 3D n = 16: 4.92e-2) plus a 20 % margin.
-    const double bound = dim == 1 ? 9e-3 : dim == 2 ? 2.4e-2 : 5.9e-2;
+    // Measured L1(rho) at the finest gate level (1D n = 800: 4.02e-3; 2D n = 100: 1.91e-2;
+    // 3D n = 16: 4.82e-2) plus a 20 % margin.
+    const double bound = dim == 1 ? 4.8e-3 : dim == 2 ? 2.3e-2 : 5.8e-2;
     return tube_gates(s, bound, "measured at the finest gate level + 20 % margin", dim == 1);
   };
   return c;

@@ -154,8 +154,9 @@ TEST_CASE("total energy drift of KDK is the time-integration error, second order
   const Drift a = conservation_run<sph::EulerSymmetric<2, L1>, sph::EnergySymmetric<2, L1>>(0.5, 0.3);
   const Drift b = conservation_run<sph::EulerSymmetric<2, L1>, sph::EnergySymmetric<2, L1>>(0.5, 0.15);
   INFO("C = 0.3: " << a.energy << " (" << a.steps << " steps); C = 0.15: " << b.energy << " (" << b.steps << " steps)");
-  // Halving dt divides an O(dt^2) drift by 4; band [3, 5.5] measured (see report).
-  CHECK(a.energy / b.energy >= 3.0);
+  // Halving dt divides an O(dt^2) drift by 4, an O(dt) drift by 2. Measured 3.3 (the switch of
+  // (45) at v_ij . r_ij = 0 is not smooth); KDK without the velocity prediction measured 2.02.
+  CHECK(a.energy / b.energy >= 2.8);
   CHECK(a.energy / b.energy <= 5.5);
 }
 
