@@ -73,6 +73,7 @@ TubeMethod method(const Params& p) {
       p.text("timestep") == "courant" ? sph::TimeStepCriterion::courant : sph::TimeStepCriterion::chapter43;
   m.controls.step.C = p.real("C");
   m.controls.step.C_force = p.real("C_force");
+  m.controls.step.C_energy = p.real("C_energy");
   m.controls.step.eta = p.real("eta");
   m.hfact = p.real("hfact");
   m.controls.max_steps = p.integer("max_steps");
@@ -170,6 +171,7 @@ std::vector<ParamSpec> params(long n_default, double hfact_default) {
                         {"courant", "chapter"}),
            real_param("C", 0.3, "Courant number", 0.0),
            real_param("C_force", 0.25, "acceleration criterion factor", 0.0),
+           real_param("C_energy", 0.25, "cooling criterion dt <= C_energy u / |du/dt| (0: off)", -1e-300),
            real_param("eta", 0.3, "eta of (43)", 0.0),
            real_param("alpha", 1.0, "artificial viscosity alpha (45)", -1e-300),
            real_param("beta", 2.0, "artificial viscosity beta (45)", -1e-300),
