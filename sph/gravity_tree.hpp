@@ -57,21 +57,32 @@ inline void add_node(const Tree<3>::Node& nd, const Vec<3>& y, double G, double 
   }
 }
 
+// Squared distance from the centre of mass beyond which a node is accepted:
+// plain (d / theta)^2, robust (d / theta + delta)^2.
 template <Opening O>
-inline bool accept(const Tree<3>::Node& nd, const Vec<3>& r, double theta) {
-  const double dist = (r - nd.com).norm();
-  if constexpr (O == Opening::plain) {
-    return nd.size < theta * dist;
-  } else {
-    const bool inside = ((r - nd.centre).cwiseAbs().array() <= 0.5 * nd.size).all();
-    return !inside && dist > nd.size / theta + (nd.com - nd.centre).norm();
+std::vector<double> critical_radius2(const Tree<3>& t, double theta) {
+  std::vector<double> rc2(t.nodes.size());
+  for (std::size_t k = 0; k < rc2.size(); ++k) {
+    const auto& nd = t.nodes[k];
+    double rc = nd.size / theta;
+    if constexpr (O == Opening::robust) rc += (nd.com - nd.centre).norm();
+    rc2[k] = rc * rc;
   }
+  return rc2;
+}
+
+template <Opening O>
+inline bool accept(const Tree<3>::Node& nd, double rc2, const Vec<3>& r) {
+  if ((r - nd.com).squaredNorm() <= rc2) return false;
+  if constexpr (O == Opening::robust) return !((r - nd.centre).cwiseAbs().array() <= 0.5 * nd.size).all();
+  return true;
 }
 
 // Field at point r from all particles except `self` (-1 for a point that is no particle).
 template <Multipole M, Opening O>
 void walk(const Tree<3>& t, const std::vector<Vec<3>>& x, const std::vector<double>& m,
-          const GravityOptions& o, const Vec<3>& r, long self, std::vector<int>& stack, Vec<3>& a,
+          const GravityOptions& o, const std::vector<double>& rc2, const Vec<3>& r, long self,
+          std::vector<int>& stack, Vec<3>& a,
           double& phi, long& count) {
   const double eps2 = o.eps * o.eps;
   a.setZero();
@@ -80,7 +91,8 @@ void walk(const Tree<3>& t, const std::vector<Vec<3>>& x, const std::vector<doub
   if (t.nodes.empty()) return;
   stack.assign(1, 0);
   while (!stack.empty()) {
-    const auto& nd = t.nodes[stack.back()];
+    const int k = stack.back();
+    const auto& nd = t.nodes[k];
     stack.pop_back();
     if (nd.leaf()) {
       for (int q = nd.begin; q < nd.end; ++q) {
@@ -89,7 +101,7 @@ void walk(const Tree<3>& t, const std::vector<Vec<3>>& x, const std::vector<doub
         add_plummer<3>(r - x[j], o.G * m[j], eps2, a, phi);
         ++count;
       }
-    } else if (accept<O>(nd, r, o.theta)) {
+    } else if (accept<O>(nd, rc2[k], r)) {
       add_node<M>(nd, r - nd.com, o.G, eps2, a, phi);
       ++count;
     } else {
@@ -103,12 +115,13 @@ GravityField field(const Tree<3>& t, const std::vector<Vec<3>>& x, const std::ve
                    const GravityOptions& o, const std::vector<Vec<3>>& targets, bool at_particles) {
   const std::size_t n = targets.size();
   GravityField f{std::vector<Vec<3>>(n), std::vector<double>(n), std::vector<long>(n)};
+  const std::vector<double> rc2 = critical_radius2<O>(t, o.theta);
 #pragma omp parallel
   {
     std::vector<int> stack;
 #pragma omp for schedule(dynamic, 64)
     for (std::size_t i = 0; i < n; ++i)
-      walk<M, O>(t, x, m, o, targets[i], at_particles ? static_cast<long>(i) : -1L, stack, f.a[i], f.phi[i],
+      walk<M, O>(t, x, m, o, rc2, targets[i], at_particles ? static_cast<long>(i) : -1L, stack, f.a[i], f.phi[i],
                  f.interactions[i]);
   }
   return f;

@@ -119,3 +119,14 @@ TEST_CASE("gravity: point-mass term adds (76)-(77) to dv/dt", "[gravity]") {
   CHECK(d.dvdt[0][0] == Approx(-2.0 / std::pow(1.01, 1.5)));
   CHECK(d.dvdt[1][1] == Approx(-2.0 * 0.1 / std::pow(0.02, 1.5)));
 }
+
+TEST_CASE("gate: gravity", "[gate][gravity]") {
+  const auto& c = sphv::find_case("gravity");
+  for (const auto& settings : c.variants) {
+    const auto s = sphv::run_sweep(c, c.gate_levels, settings);
+    for (const auto& ch : s.checks) {
+      INFO(s.variant() << ": " << ch.name << " = " << ch.value << " in [" << ch.lo << ", " << ch.hi << "]: " << ch.why);
+      CHECK(ch.pass());
+    }
+  }
+}
