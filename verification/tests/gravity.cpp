@@ -130,3 +130,12 @@ TEST_CASE("gate: gravity", "[gate][gravity]") {
     }
   }
 }
+
+TEST_CASE("gate: gravity_sw", "[gate][gravity]") {
+  const auto& c = sphv::find_case("gravity_sw");
+  const auto s = sphv::run_sweep(c, c.gate_levels, {});
+  for (const auto& ch : s.checks) {
+    INFO(ch.name << " = " << ch.value << " in [" << ch.lo << ", " << ch.hi << "]: " << ch.why);
+    CHECK(ch.pass());
+  }
+}
