@@ -139,3 +139,12 @@ TEST_CASE("gate: gravity_sw", "[gate][gravity]") {
     CHECK(ch.pass());
   }
 }
+
+TEST_CASE("gate: kepler", "[gate][gravity]") {
+  const auto& c = sphv::find_case("kepler");
+  const auto s = sphv::run_sweep(c, c.gate_levels, {});
+  for (const auto& ch : s.checks) {
+    INFO(ch.name << " = " << ch.value << " in [" << ch.lo << ", " << ch.hi << "]: " << ch.why);
+    CHECK(ch.pass());
+  }
+}
