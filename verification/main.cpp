@@ -8,6 +8,7 @@
 #include <iostream>
 
 #include "verification/case.hpp"
+#include "verification/gravity_command.hpp"
 #include "verification/sweep.hpp"
 
 namespace fs = std::filesystem;
@@ -132,6 +133,7 @@ int main(int argc, char** argv) {
   auto* verify_cmd = app.add_subcommand("verify", "the default catalogue: sweeps, gates, summary table");
   verify_cmd->add_option("--out", out, "output directory (default runs/verify)");
   verify_cmd->add_option("--cases", only, "only these cases")->delimiter(',');
+  add_gravity_command(app);
 
   try {
     app.parse(argc, argv);
