@@ -148,3 +148,14 @@ TEST_CASE("gate: kepler", "[gate][gravity]") {
     CHECK(ch.pass());
   }
 }
+
+TEST_CASE("gate: gravity_analytic", "[gate][gravity]") {
+  const auto& c = sphv::find_case("gravity_analytic");
+  for (const auto& settings : c.variants) {
+    const auto s = sphv::run_sweep(c, c.gate_levels, settings);
+    for (const auto& ch : s.checks) {
+      INFO(s.variant() << ": " << ch.name << " = " << ch.value << " in [" << ch.lo << ", " << ch.hi << "]: " << ch.why);
+      CHECK(ch.pass());
+    }
+  }
+}
