@@ -24,10 +24,14 @@ struct Box {
   }
 };
 
-// Nearest-image separation dx = r_i - r_j (unchanged in open dimensions).
+// Nearest-image separation dx = r_i - r_j (unchanged in open dimensions, where wrap = 0).
+// Rounds through an integer conversion: std::nearbyint is a library call without SSE4.1.
 template <int D>
 inline Vec<D> min_image(Vec<D> dx, const Vec<D>& L, const Vec<D>& wrap) {
-  for (int d = 0; d < D; ++d) dx[d] -= L[d] * std::nearbyint(dx[d] * wrap[d]);
+  for (int d = 0; d < D; ++d) {
+    const double s = dx[d] * wrap[d];
+    dx[d] -= L[d] * static_cast<double>(static_cast<long long>(s + (s >= 0.0 ? 0.5 : -0.5)));
+  }
   return dx;
 }
 

@@ -6,32 +6,36 @@
 #include <stdexcept>
 #include <vector>
 
+#include <omp.h>
+
 #include "sph/box.hpp"
 #include "sph/neighbour_list.hpp"
 
 namespace sph {
 
-// Linked-cell grid search of section 9.4.3. Cells are at least as wide as the largest
-// support radius, so the neighbours of a particle lie in its own and the adjacent cells.
-// Pairs are kept when |r_ij| < max(h_i, h_j) (errata: symmetric interactions with variable h).
-// Cost O(N) for bounded density contrast (errata). Each particle's list is in a fixed order
-// (by cell, then by index), so results do not depend on the thread count.
+// Linked-cell grid search of section 9.4.3. Pairs are kept when |r_ij| < max(h_i, h_j)
+// (errata: symmetric interactions with variable h). Cost O(N) for bounded density contrast
+// (errata). Cells are half the largest support radius wide and a particle searches the 5^D
+// cells around its own (fewer candidates than 3^D cells of width h). The chapter's linked list
+// is stored as a counting sort, so each cell's positions lie contiguously; a periodic image is
+// a shift per stencil cell, so the distance test needs no rounding. Each particle's list is in
+// a fixed order (by stencil cell, then by index): results do not depend on the thread count.
 template <int D>
-NeighbourList grid_search(const std::vector<Vec<D>>& x, const std::vector<double>& h,
-                          const Box<D>& box) {
+NeighbourList grid_search(const std::vector<Vec<D>>& x, const std::vector<double>& h, const Box<D>& box) {
   const std::size_t n = x.size();
   NeighbourList nl;
   nl.offset.assign(n + 1, 0);
   if (n == 0) return nl;
   const double hmax = *std::max_element(h.begin(), h.end());
-  if (!(hmax > 0.0)) throw std::invalid_argument("grid search: support radius h must be > 0");
+  if (!(hmax > 0.0) || !std::isfinite(hmax))
+    throw std::invalid_argument("grid search: support radius h must be > 0 and finite");
 
   // Extent: the box in periodic dimensions, the particles' bounding box in open ones.
-  Vec<D> lo = box.lo, ext = box.length();
+  const Vec<D> L = box.length();
+  Vec<D> lo = box.lo, ext = L;
   for (int d = 0; d < D; ++d) {
     if (box.periodic[d]) {
-      if (hmax > 0.5 * ext[d])
-        throw std::invalid_argument("grid search: support radius exceeds half the periodic box");
+      if (hmax > 0.5 * L[d]) throw std::invalid_argument("grid search: support radius exceeds half the periodic box");
       continue;
     }
     double a = x[0][d], b = x[0][d];
@@ -39,90 +43,141 @@ NeighbourList grid_search(const std::vector<Vec<D>>& x, const std::vector<double
     lo[d] = a;
     ext[d] = std::max(b - a, hmax);
   }
-  std::array<int, D> nc;
-  Vec<D> inv_cell;
-  for (int d = 0; d < D; ++d) {
-    nc[d] = std::max(1, std::min(1 << 20, static_cast<int>(ext[d] / hmax)));
-    inv_cell[d] = nc[d] / ext[d];
+  // Cells of width >= hmax/2, widened so that there are at most ~2N cells (a clustered set in
+  // a large open box would otherwise ask for far more cells than particles).
+  double width = 0.5 * hmax;
+  auto cells_along = [&](int d) { return std::max(1, static_cast<int>(std::min(ext[d] / width, 1e6))); };
+  for (;;) {
+    double total = 1.0;
+    for (int d = 0; d < D; ++d) total *= cells_along(d);
+    if (total <= 2.0 * n + 64) break;
+    width *= 1.26;
   }
-  auto cell_coord = [&](const Vec<D>& xi, int d) {
-    int c = static_cast<int>(std::floor((xi[d] - lo[d]) * inv_cell[d]));
-    if (box.periodic[d]) c = ((c % nc[d]) + nc[d]) % nc[d];
-    return std::clamp(c, 0, nc[d] - 1);
-  };
+  std::array<int, D> nc;
+  int reach = 1;  // stencil half-width in cells
+  std::int64_t ncell = 1;
+  for (int d = 0; d < D; ++d) {
+    nc[d] = cells_along(d);
+    reach = std::max(reach, static_cast<int>(std::ceil(hmax / (ext[d] / nc[d]) - 1e-12)));
+    ncell *= nc[d];
+  }
   auto flat = [&](const std::array<int, D>& c) {
     std::int64_t k = 0;
     for (int d = D - 1; d >= 0; --d) k = k * nc[d] + c[d];
     return k;
   };
-  std::int64_t ncell = 1;
-  for (int d = 0; d < D; ++d) ncell *= nc[d];
 
-  // Counting sort of particles by cell (the chapter's linked list, stored contiguously).
-  std::vector<std::int64_t> cell_of(n);
-  std::vector<std::int64_t> start(ncell + 1, 0);
+  // Counting sort by cell; positions copied in that order (wrapped into a periodic box).
+  std::vector<std::array<int, D>> coord(n);
+  std::vector<std::int64_t> cell_of(n), start(ncell + 1, 0);
   for (std::size_t i = 0; i < n; ++i) {
-    std::array<int, D> c;
-    for (int d = 0; d < D; ++d) c[d] = cell_coord(x[i], d);
-    cell_of[i] = flat(c);
+    for (int d = 0; d < D; ++d) {
+      double xd = x[i][d] - lo[d];
+      if (box.periodic[d]) xd -= L[d] * std::floor(xd / L[d]);
+      coord[i][d] = std::clamp(static_cast<int>(xd / ext[d] * nc[d]), 0, nc[d] - 1);
+    }
+    cell_of[i] = flat(coord[i]);
     ++start[cell_of[i] + 1];
   }
   for (std::int64_t c = 0; c < ncell; ++c) start[c + 1] += start[c];
   std::vector<int> sorted(n);
+  std::vector<Vec<D>> xs(n);
+  std::vector<double> hs(n);
   {
     std::vector<std::int64_t> fill(start.begin(), start.end() - 1);
-    for (std::size_t i = 0; i < n; ++i) sorted[fill[cell_of[i]]++] = static_cast<int>(i);
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::int64_t k = fill[cell_of[i]]++;
+      sorted[k] = static_cast<int>(i);
+      xs[k] = x[i];
+      for (int d = 0; d < D; ++d)
+        if (box.periodic[d]) xs[k][d] = lo[d] + (x[i][d] - lo[d]) - L[d] * std::floor((x[i][d] - lo[d]) / L[d]);
+      hs[k] = h[i];
+    }
   }
 
-  // The distinct adjacent cells of a cell (fewer than 3^D when a periodic axis has < 3 cells).
-  auto adjacent = [&](std::int64_t cell) {
-    std::array<int, D> c;
-    for (int d = 0; d < D; ++d) c[d] = static_cast<int>(cell % nc[d]), cell /= nc[d];
-    std::vector<std::int64_t> out;
+  // The stencil of a cell as runs of consecutive cells along x (contiguous in the sorted
+  // arrays), each with the image shift that brings it next to the cell.
+  struct Run {
+    std::int64_t first, last;  // particle range [first, last) in sorted order
+    Vec<D> shift;
+  };
+  auto stencil = [&](const std::array<int, D>& c, std::vector<Run>& out) {
+    out.clear();
     std::array<int, D> o;
-    o.fill(-1);
-    while (true) {
+    o.fill(-reach);
+    for (;;) {  // over the offsets in y, z; o[0] is unused
       std::array<int, D> cc;
+      Vec<D> shift = Vec<D>::Zero();
       bool inside = true;
-      for (int d = 0; d < D; ++d) {
+      for (int d = 1; d < D; ++d) {
         cc[d] = c[d] + o[d];
-        if (box.periodic[d]) cc[d] = (cc[d] + nc[d]) % nc[d];
-        else if (cc[d] < 0 || cc[d] >= nc[d]) inside = false;
+        if (box.periodic[d]) {
+          const int wraps = static_cast<int>(std::floor(static_cast<double>(cc[d]) / nc[d]));
+          cc[d] -= wraps * nc[d];
+          shift[d] = wraps * L[d];
+        } else if (cc[d] < 0 || cc[d] >= nc[d]) {
+          inside = false;
+        }
       }
-      if (inside) out.push_back(flat(cc));
-      int d = 0;
-      while (d < D && ++o[d] > 1) o[d++] = -1;
-      if (d == D) break;
+      // Along x: split [c0 - reach, c0 + reach] where it wraps (periodic) or clip it (open).
+      for (int a = c[0] - reach; inside && a <= c[0] + reach;) {
+        int wraps = 0, b = c[0] + reach;
+        if (box.periodic[0]) {
+          wraps = static_cast<int>(std::floor(static_cast<double>(a) / nc[0]));
+          b = std::min(b, (wraps + 1) * nc[0] - 1);
+        } else {
+          a = std::max(a, 0);
+          b = std::min(b, nc[0] - 1);
+          if (a > b) break;
+        }
+        cc[0] = a - wraps * nc[0];
+        const std::int64_t first = flat(cc);
+        shift[0] = wraps * L[0];
+        out.push_back({start[first], start[first + (b - a) + 1], shift});
+        a = b + 1;
+      }
+      int d = 1;
+      while (d < D && ++o[d] > reach) o[d++] = -reach;
+      if (d >= D) break;
     }
-    std::sort(out.begin(), out.end());
-    out.erase(std::unique(out.begin(), out.end()), out.end());
-    return out;
   };
 
-  const Vec<D> L = box.length(), wrap = box.wrap_factor();
-  auto visit = [&](std::size_t i, auto&& emit) {
-    for (std::int64_t c : adjacent(cell_of[i]))
-      for (std::int64_t k = start[c]; k < start[c + 1]; ++k) {
-        const int j = sorted[k];
-        if (static_cast<std::size_t>(j) == i) continue;
-        const double rs = std::max(h[i], h[j]);
-        if (min_image<D>(x[i] - x[j], L, wrap).squaredNorm() < rs * rs) emit(j);
+  // One pass over the particles in cell order (each cell's stencil built once): each thread
+  // fills the lists of a contiguous range into its own buffer; the lists are then copied into
+  // particle order.
+  std::vector<std::vector<int>> parts;
+  std::vector<int> owner(n);
+  std::vector<std::size_t> local(n);
+#pragma omp parallel
+  {
+    const int nt = omp_get_num_threads(), t = omp_get_thread_num();
+#pragma omp single
+    parts.resize(nt);
+    const std::size_t first = n * t / nt, last = n * (t + 1) / nt;
+    std::vector<int>& js = parts[t];
+    js.reserve((last - first) * 64);
+    std::vector<Run> sten;
+    std::int64_t sten_of = -1;
+    for (std::size_t s = first; s < last; ++s) {
+      const std::size_t i = sorted[s];
+      if (cell_of[i] != sten_of) stencil(coord[i], sten), sten_of = cell_of[i];
+      owner[i] = t;
+      local[i] = js.size();
+      for (const Run& run : sten) {
+        const Vec<D> xi = xs[s] - run.shift;
+        for (std::int64_t k = run.first; k < run.last; ++k) {
+          const double rs = std::max(hs[s], hs[k]);
+          if ((xi - xs[k]).squaredNorm() < rs * rs && k != static_cast<std::int64_t>(s)) js.push_back(sorted[k]);
+        }
       }
-  };
-  // Two passes (count, then fill) keep the list contiguous without locks.
-#pragma omp parallel for schedule(dynamic, 256)
-  for (std::size_t i = 0; i < n; ++i) {
-    int count = 0;
-    visit(i, [&](int) { ++count; });
-    nl.offset[i + 1] = count;
+      nl.offset[i + 1] = js.size() - local[i];
+    }
   }
   for (std::size_t i = 0; i < n; ++i) nl.offset[i + 1] += nl.offset[i];
   nl.j.resize(nl.offset[n]);
-#pragma omp parallel for schedule(dynamic, 256)
-  for (std::size_t i = 0; i < n; ++i) {
-    std::size_t k = nl.offset[i];
-    visit(i, [&](int j) { nl.j[k++] = j; });
-  }
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i)
+    std::copy_n(parts[owner[i]].begin() + local[i], nl.offset[i + 1] - nl.offset[i], nl.j.begin() + nl.offset[i]);
   return nl;
 }
 

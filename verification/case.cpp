@@ -32,6 +32,11 @@ Params Case::parse(const std::vector<std::string>& settings) const {
   return p;
 }
 
+std::vector<long> Case::sweep_levels(const std::vector<std::string>& settings, bool gate) const {
+  const std::vector<long>& base = gate ? gate_levels : levels;
+  return levels_for ? levels_for(parse(settings), base) : base;
+}
+
 bool Case::has_tag(const std::string& t) const {
   return std::find(tags.begin(), tags.end(), t) != tags.end();
 }

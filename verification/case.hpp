@@ -36,11 +36,14 @@ struct Case {
   std::string expected_why;
   // Method variants the default catalogue sweeps, as settings (the first is the default).
   std::vector<std::vector<std::string>> variants = {{}};
+  // Adjusts a sweep's levels to a variant (e.g. fewer in 3D); may be empty.
+  std::function<std::vector<long>(const Params&, std::vector<long>)> levels_for;
   std::function<void(const Params&)> validate;   // cross-parameter checks; may be empty
   std::function<Result(const Params&)> run;
   std::function<std::vector<Check>(const Sweep&)> gates;  // may be empty
 
   Params parse(const std::vector<std::string>& settings) const;
+  std::vector<long> sweep_levels(const std::vector<std::string>& settings, bool gate) const;
   bool has_tag(const std::string& t) const;
 };
 

@@ -1,4 +1,51 @@
-# Command-line behaviour: bad input is refused with one clear line and a non-zero exit.
+# Command-line behaviour: bad input is refused with one clear "sphv: error:" line and a
+# non-zero exit; good input writes its files.
+function(sphv_refuses name)
+  add_test(NAME cli_refuses_${name} COMMAND sphv ${ARGN})
+  set_tests_properties(cli_refuses_${name} PROPERTIES WILL_FAIL TRUE)
+  add_test(NAME cli_message_${name} COMMAND sphv ${ARGN})
+  set_tests_properties(cli_message_${name} PROPERTIES PASS_REGULAR_EXPRESSION "^sphv: error: [^\n]+\n?$")
+endfunction()
+
+sphv_refuses(unknown_case run no_such_case)
+sphv_refuses(unknown_parameter run kernel --set nope=1)
+sphv_refuses(malformed_setting run kernel --set n)
+sphv_refuses(non_integer_n run kernel --set n=ten)
+sphv_refuses(zero_n run kernel --set n=0)
+sphv_refuses(negative_n sweep interpolation --levels 16,-32)
+sphv_refuses(negative_h run kernel --set h=-0.1)
+sphv_refuses(nan_h run kernel --set h=nan)
+sphv_refuses(bad_dim run interpolation --set dim=4)
+sphv_refuses(unknown_option run kernel --bogus)
+
+add_test(NAME cli_list COMMAND sphv list)
+set_tests_properties(cli_list PROPERTIES PASS_REGULAR_EXPRESSION "interpolation(.|\n)*kernel")
+add_test(NAME cli_run_writes_result COMMAND sphv run interpolation --set n=16 --out ${CMAKE_BINARY_DIR}/cli_run)
+set_tests_properties(cli_run_writes_result PROPERTIES PASS_REGULAR_EXPRESSION "verdict: ok")
+
+# A sweep writes sweep.json, and the report script turns it into a page with figures.
+add_test(NAME cli_sweep_writes_sweep COMMAND sphv sweep kernel --levels 16,32,64 --out ${CMAKE_BINARY_DIR}/cli_sweep/kernel/default)
+set_tests_properties(cli_sweep_writes_sweep PROPERTIES FIXTURES_SETUP sweep_output PASS_REGULAR_EXPRESSION "observed order sum_3d")
+add_test(NAME report_script COMMAND bash -c
+  "py=$(bash ${CMAKE_SOURCE_DIR}/scripts/find-python.sh) && $py ${CMAKE_SOURCE_DIR}/scripts/report.py ${CMAKE_BINARY_DIR}/cli_sweep --name ctest --reports ${CMAKE_BINARY_DIR}/reports && test -s ${CMAKE_BINARY_DIR}/reports/ctest/kernel_0_convergence.pdf")
+set_tests_properties(report_script PROPERTIES FIXTURES_REQUIRED sweep_output)
+
+# Sweeps at scale (issue 9): resumable after a kill; the MPI sweep matches the serial one.
+add_test(NAME sweep_resumes_after_kill COMMAND bash ${CMAKE_SOURCE_DIR}/scripts/test-resume.sh $<TARGET_FILE:sphv> ${CMAKE_BINARY_DIR}/resume)
+set_tests_properties(sweep_resumes_after_kill PROPERTIES PASS_REGULAR_EXPRESSION "^PASS" RUN_SERIAL TRUE)
+add_test(NAME sweep_parallel_matches_serial COMMAND bash -c
+  "rm -rf par ser && $<TARGET_FILE:sphv> sweep interpolation --vary dim=1,2 --jobs 2 --out par >/dev/null && $<TARGET_FILE:sphv> sweep interpolation --vary dim=1,2 --jobs 1 --out ser >/dev/null && py=$(bash ${CMAKE_SOURCE_DIR}/scripts/find-python.sh) && $py ${CMAKE_SOURCE_DIR}/scripts/compare-sweeps.py par ser"
+  WORKING_DIRECTORY ${CMAKE_BINARY_DIR})
+set_tests_properties(sweep_parallel_matches_serial PROPERTIES PASS_REGULAR_EXPRESSION "points identical")
+find_program(MPIEXEC_BIN NAMES mpirun mpiexec)
+if(MPI_CXX_FOUND AND MPIEXEC_BIN)
+  add_test(NAME sweep_mpi_matches_serial COMMAND bash -c
+    "rm -rf mpi ser1 && ${MPIEXEC_BIN} --oversubscribe -n 2 $<TARGET_FILE:sphv> --threads 1 sweep interpolation --vary dim=1,2 --out mpi >/dev/null && $<TARGET_FILE:sphv> --threads 1 sweep interpolation --vary dim=1,2 --jobs 1 --out ser1 >/dev/null && py=$(bash ${CMAKE_SOURCE_DIR}/scripts/find-python.sh) && $py ${CMAKE_SOURCE_DIR}/scripts/compare-sweeps.py mpi ser1"
+    WORKING_DIRECTORY ${CMAKE_BINARY_DIR})
+  # OpenMPI refuses root unless told; CI runs as root.
+  set_tests_properties(sweep_mpi_matches_serial PROPERTIES PASS_REGULAR_EXPRESSION "points identical"
+    ENVIRONMENT "OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1;OMPI_MCA_rmaps_base_oversubscribe=1")
+endif()
 
 # sphv gravity: bad input gives one error line and a non-zero exit (inputs written at configure time).
 set(_gdir ${CMAKE_BINARY_DIR}/gravity_cli)

@@ -9,10 +9,20 @@
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <thread>
 
 #include "build_info.hpp"
 
 namespace sphv {
+
+namespace {
+std::string cpu_model() {
+  std::ifstream f("/proc/cpuinfo");
+  for (std::string line; std::getline(f, line);)
+    if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
+  return "unknown";
+}
+}  // namespace
 
 nlohmann::json provenance() {
   char host[256] = "unknown";
@@ -23,7 +33,7 @@ nlohmann::json provenance() {
   return {{"git_commit", build::git_commit}, {"compiler", build::compiler},
           {"cxx_flags", build::cxx_flags},   {"build_type", build::build_type},
           {"threads", omp_get_max_threads()}, {"date", date},
-          {"host", host}};
+          {"host", host}, {"cpu", cpu_model()}, {"cores", std::thread::hardware_concurrency()}};
 }
 
 namespace {
@@ -54,6 +64,38 @@ nlohmann::json to_json(const Result& r) {
           {"wall_time_s", r.wall_time_s}, {"errors", errors},  {"functionals", functionals},
           {"verdict", r.verdict},      {"figures", figures},   {"extra", r.extra},
           {"provenance", provenance()}};
+}
+
+namespace {
+std::vector<double> doubles(const nlohmann::json& a) {
+  std::vector<double> v;
+  for (const auto& x : a) v.push_back(x.is_number() ? x.get<double>() : std::nan(""));
+  return v;
+}
+std::map<std::string, double> named(const nlohmann::json& o) {
+  std::map<std::string, double> m;
+  for (const auto& [k, v] : o.items()) m[k] = v.is_number() ? v.get<double>() : std::nan("");
+  return m;
+}
+}  // namespace
+
+Result result_from_json(const nlohmann::json& j) {
+  Result r;
+  r.case_name = j.at("case");
+  r.params = j.at("params");
+  r.n_particles = j.at("n_particles");
+  r.wall_time_s = j.at("wall_time_s");
+  r.errors = named(j.at("errors"));
+  r.functionals = named(j.at("functionals"));
+  r.verdict = j.at("verdict");
+  r.extra = j.at("extra");
+  for (const auto& f : j.at("figures")) {
+    Figure fig{f.at("name"), f.at("title"), f.at("xlabel"), f.at("ylabel"), f.at("xscale"), f.at("yscale"), {}};
+    for (const auto& s : f.at("series"))
+      fig.series.push_back({s.at("label"), doubles(s.at("x")), doubles(s.at("y")), s.at("style")});
+    r.figures.push_back(std::move(fig));
+  }
+  return r;
 }
 
 void write_atomically(const std::filesystem::path& path, const std::string& text) {

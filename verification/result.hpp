@@ -49,6 +49,8 @@ struct Result {
 nlohmann::json provenance();
 nlohmann::json to_json(const Figure& f);
 nlohmann::json to_json(const Result& r);
+// Reads a result back (resumed sweeps, subprocess and MPI points); particles are not read.
+Result result_from_json(const nlohmann::json& j);
 
 // Writes text to path through a temporary file and a rename: a reader never sees half a file
 // and an earlier file survives a failed write.

@@ -1,5 +1,7 @@
 #include "verification/sweep.hpp"
 
+#include "verification/baseline.hpp"
+
 #include <gsl/gsl_fit.h>
 
 #include <chrono>
@@ -55,25 +57,19 @@ std::optional<Gci> grid_convergence_index(const std::vector<double>& n, const st
   return g;
 }
 
-Sweep run_sweep(const Case& c, const std::vector<long>& levels, const std::vector<std::string>& settings,
-                const std::optional<std::filesystem::path>& out,
-                const std::function<void(const Result&)>& on_run) {
+Sweep summarise(const Case& c, const std::vector<std::string>& settings, const std::vector<long>& levels,
+                std::vector<Result> runs) {
   Sweep s;
   s.case_name = c.name;
+  s.summary = c.summary;
+  s.n_counts = c.n_counts;
+  s.expected_why = c.expected_why;
   s.levels = levels;
   const Params base = c.parse(settings);
-  if (c.expected_order) s.expected_order = c.expected_order(base);
   s.settings = base.non_defaults();
-  const auto t0 = std::chrono::steady_clock::now();
-  // Every level is validated before the first one runs.
-  std::vector<Params> points;
-  for (long n : levels) points.push_back(c.parse(settings).with("n", std::to_string(n)));
-  for (std::size_t k = 0; k < points.size(); ++k) {
-    s.runs.push_back(run_case(c, points[k]));
-    if (out) write_result(s.runs.back(), *out / ("n" + std::to_string(levels[k])));
-    if (on_run) on_run(s.runs.back());
-  }
-  s.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (c.expected_order) s.expected_order = c.expected_order(base);
+  s.runs = std::move(runs);
+  for (const auto& r : s.runs) s.wall_time_s += r.wall_time_s;
 
   std::vector<double> n(levels.begin(), levels.end());
   std::map<std::string, std::vector<double>> errs, funcs;
@@ -89,8 +85,65 @@ Sweep run_sweep(const Case& c, const std::vector<long>& levels, const std::vecto
       if (auto g = grid_convergence_index(n, v, p)) s.gci[k] = *g;
   }
   if (c.gates) s.checks = c.gates(s);
+  for (auto& d : drift_checks(s)) s.checks.push_back(std::move(d));
+  return s;
+}
+
+Sweep run_sweep(const Case& c, const std::vector<long>& levels, const std::vector<std::string>& settings,
+                const std::optional<std::filesystem::path>& out, const RunOptions& opt) {
+  std::vector<Point> points;
+  for (long n : levels) points.push_back({settings, n, out ? *out / ("n" + std::to_string(n)) : ""});
+  Sweep s = summarise(c, settings, levels, run_points(c, points, opt));
   if (out) write_atomically(*out / "sweep.json", to_json(s).dump(1) + "\n");
   return s;
+}
+
+std::vector<std::vector<std::string>> expand_variants(const std::vector<std::string>& base,
+                                                      const std::vector<std::string>& vary) {
+  std::vector<std::vector<std::string>> out = {base};
+  for (const auto& kv : vary) {
+    const auto eq = kv.find('=');
+    if (eq == std::string::npos || eq == 0 || eq + 1 == kv.size())
+      throw InputError("malformed --vary '" + kv + "': expected key=a,b,c");
+    std::vector<std::vector<std::string>> next;
+    for (const auto& v : out) {
+      std::size_t from = eq + 1;
+      while (from <= kv.size()) {
+        const auto comma = std::min(kv.find(',', from), kv.size());
+        auto w = v;
+        w.push_back(kv.substr(0, eq + 1) + kv.substr(from, comma - from));
+        next.push_back(std::move(w));
+        from = comma + 1;
+      }
+    }
+    out = std::move(next);
+  }
+  return out;
+}
+
+std::vector<Sweep> run_sweeps(const Case& c, const std::vector<long>& levels,
+                              const std::vector<std::vector<std::string>>& variants,
+                              const std::filesystem::path& out, const RunOptions& opt) {
+  std::vector<Point> points;
+  std::vector<std::vector<long>> lv;
+  std::vector<std::filesystem::path> dirs;
+  for (const auto& v : variants) {
+    lv.push_back(c.levels_for ? c.levels_for(c.parse(v), levels) : levels);
+    const Sweep label{.settings = c.parse(v).non_defaults()};
+    dirs.push_back(variants.size() == 1 ? out : out / label.variant());
+    for (long n : lv.back()) points.push_back({v, n, dirs.back() / ("n" + std::to_string(n))});
+  }
+  std::vector<Result> results = run_points(c, points, opt);
+  std::vector<Sweep> sweeps;
+  if (results.empty()) return sweeps;  // an MPI rank other than 0
+  auto it = results.begin();
+  for (std::size_t k = 0; k < variants.size(); ++k) {
+    std::vector<Result> runs(it, it + lv[k].size());
+    it += lv[k].size();
+    sweeps.push_back(summarise(c, variants[k], lv[k], std::move(runs)));
+    write_atomically(dirs[k] / "sweep.json", to_json(sweeps.back()).dump(1) + "\n");
+  }
+  return sweeps;
 }
 
 nlohmann::json to_json(const Sweep& s) {
@@ -107,7 +160,8 @@ nlohmann::json to_json(const Sweep& s) {
   for (const auto& c : s.checks)
     checks.push_back({{"name", c.name}, {"value", num(c.value)}, {"lo", num(c.lo)}, {"hi", num(c.hi)},
                       {"why", c.why}, {"pass", c.pass()}});
-  return {{"case", s.case_name}, {"variant", s.variant()}, {"settings", s.settings},
+  return {{"case", s.case_name}, {"summary", s.summary}, {"n_counts", s.n_counts},
+          {"expected_why", s.expected_why}, {"variant", s.variant()}, {"settings", s.settings},
           {"levels", s.levels},  {"runs", runs},           {"observed_order", order},
           {"expected_order", expected}, {"gci", gci},      {"checks", checks},
           {"passed", s.passed()}, {"wall_time_s", s.wall_time_s}};

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "verification/case.hpp"
+#include "verification/points.hpp"
 
 namespace sphv {
 
@@ -24,6 +25,7 @@ struct Gci {
 // A case run at several resolutions, with the fitted orders of convergence.
 struct Sweep {
   std::string case_name;
+  std::string summary, n_counts, expected_why;  // from the case, for reports
   std::vector<std::string> settings;  // the variant: settings other than n
   std::vector<long> levels;
   std::vector<Result> runs;
@@ -45,8 +47,22 @@ std::optional<Gci> grid_convergence_index(const std::vector<double>& n, const st
 // Runs the case at each level (parameter n) with the given settings; with out set, writes
 // out/n<level>/result.json as each run finishes and out/sweep.json at the end.
 Sweep run_sweep(const Case& c, const std::vector<long>& levels, const std::vector<std::string>& settings,
-                const std::optional<std::filesystem::path>& out = std::nullopt,
-                const std::function<void(const Result&)>& on_run = {});
+                const std::optional<std::filesystem::path>& out = std::nullopt, const RunOptions& opt = {});
+
+// The variants of `--vary key=a,b,c` (repeatable): the product of all values, each added to
+// the base settings.
+std::vector<std::vector<std::string>> expand_variants(const std::vector<std::string>& base,
+                                                      const std::vector<std::string>& vary);
+
+// Runs levels x variants as one pool of points (levels adjusted per variant by the case) and
+// writes out/<variant>/sweep.json per variant. Under mpirun only rank 0 returns sweeps.
+std::vector<Sweep> run_sweeps(const Case& c, const std::vector<long>& levels,
+                              const std::vector<std::vector<std::string>>& variants,
+                              const std::filesystem::path& out, const RunOptions& opt);
+
+// Orders, GCI and gate checks of a finished set of runs.
+Sweep summarise(const Case& c, const std::vector<std::string>& settings, const std::vector<long>& levels,
+                std::vector<Result> runs);
 
 nlohmann::json to_json(const Sweep& s);
 

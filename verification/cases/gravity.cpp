@@ -193,7 +193,7 @@ const Registration reg{Case{
                choice_param("model", "plummer", "particle set", {"uniform", "plummer", "clustered"}),
                real_param("eps", 0.01, "Plummer softening length (tree and direct sum)", std::nullopt),
                choice_param("opening", "robust", "opening criterion", {"robust", "plain"})},
-    .levels = {5000, 20000, 80000},
+    .levels = {5000, 20000},  // 80000 takes ~5 min (direct sum 47 s, theta 0.2 walks 70-90 s)
     .gate_levels = {4096},
     .expected_order = [](const Params&) { return std::map<std::string, double>{}; },
     .expected_why = "the tree error at fixed theta does not converge with N (no order in n); the order in "

@@ -1,0 +1,15 @@
+#!/usr/bin/env bash
+# The main job: install what is missing, build, run the default catalogue (sphv verify),
+# write the report to reports/verify/index.html. Exits non-zero when a gate fails; the
+# report is written either way.
+set -uo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/build.sh || exit 1
+python=$(bash scripts/find-python.sh) || exit 1
+rm -rf runs/verify.new
+./build/sphv verify --out runs/verify.new "$@"
+status=$?
+[ -d runs/verify.new ] && rm -rf runs/verify && mv runs/verify.new runs/verify
+"$python" scripts/report.py runs/verify --name verify || exit 1
+echo "report: $(pwd)/reports/verify/index.html"
+exit $status

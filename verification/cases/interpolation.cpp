@@ -1,0 +1,152 @@
+// Case `interpolation`: accuracy of the SPH interpolant (18) and of the gradient in the direct
+// form (19) and the difference form (32), for a smooth periodic field on lattices and on
+// jittered particle sets, against the analytic field.
+#include <cmath>
+
+#include "reference/fields.hpp"
+#include "sph/density.hpp"
+#include "sph/grid_search.hpp"
+#include "sph/interpolation.hpp"
+#include "sph/lattice.hpp"
+#include "verification/case.hpp"
+#include "verification/sweep.hpp"
+
+namespace sphv {
+namespace {
+
+// Relative L2 error sqrt(sum |a - b|^2 / sum |b|^2) over all particles.
+double relative_l2(double err2, double ref2) { return std::sqrt(err2 / ref2); }
+
+template <int D>
+Result run_dim(const Params& prm) {
+  const int n = static_cast<int>(prm.integer("n"));
+  const sph::Box<D> box = sph::unit_box<D>(true);
+  sph::Particles<D> p = sph::lattice<D>(n, box, 1.0, prm.real("hfact"), prm.real("jitter"), prm.integer("seed"));
+  const sph::NeighbourList nl = sph::grid_search<D>(p.x, p.h, box);
+  sph::density_summation<D>(p, nl, box);  // m_j / rho_j from (27), as a simulation has them
+
+  const reference::SineProduct<D> field{static_cast<int>(prm.integer("k"))};
+  std::vector<double> f(p.size());
+  for (std::size_t i = 0; i < p.size(); ++i) f[i] = field.value(p.x[i].data());
+  const auto fi = sph::interpolate<D>(p, f, nl, box);
+  const auto g19 = sph::gradient_direct<D>(p, f, nl, box);
+  const auto g32 = sph::gradient_difference<D>(p, f, nl, box);
+
+  double ef = 0, rf = 0, e19 = 0, e32 = 0, rg = 0, sum20 = 0;
+  std::vector<double> col_f(p.size()), col_fi(p.size()), col_e19(p.size()), col_e32(p.size());
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const auto g = field.gradient(p.x[i].data());
+    const Eigen::Map<const sph::Vec<D>> gex(g.data());
+    ef += (fi[i] - f[i]) * (fi[i] - f[i]);
+    rf += f[i] * f[i];
+    e19 += (g19[i] - gex).squaredNorm();
+    e32 += (g32[i] - gex).squaredNorm();
+    rg += gex.squaredNorm();
+    col_f[i] = f[i];
+    col_fi[i] = fi[i];
+    col_e19[i] = (g19[i] - gex).norm();
+    col_e32[i] = (g32[i] - gex).norm();
+  }
+  // Condition (20) at every particle: how far the set is from a partition of unity.
+  const auto one = sph::interpolate<D>(p, std::vector<double>(p.size(), 1.0), nl, box);
+  for (double s : one) sum20 = std::max(sum20, std::abs(s - 1.0));
+
+  Result r;
+  r.n_particles = p.size();
+  r.errors = {{"L2_f", relative_l2(ef, rf)}, {"L2_grad19", relative_l2(e19, rg)}, {"L2_grad32", relative_l2(e32, rg)}};
+  r.extra = {{"neighbours_per_particle", double(nl.pairs()) / p.size()}, {"max_condition20_error", sum20},
+             {"h", p.h[0]}};
+  r.functionals = {{"mean_neighbours", double(nl.pairs()) / p.size()}};
+  static const char* axis[] = {"x", "y", "z"};
+  for (int d = 0; d < D; ++d) {
+    std::vector<double> c(p.size());
+    for (std::size_t i = 0; i < p.size(); ++i) c[i] = p.x[i][d];
+    r.particles.add(axis[d], std::move(c));
+  }
+  r.particles.add("m", p.m);
+  r.particles.add("rho", p.rho);
+  r.particles.add("h", p.h);
+  r.particles.add("f", col_f);
+  r.particles.add("f_sph", col_fi);
+  r.particles.add("grad_err_19", col_e19);
+  r.particles.add("grad_err_32", col_e32);
+  if (D == 1) {
+    Figure fig{"profile", "Interpolant (18) of sin(2 pi k x + 0.3)", "x", "f", "linear", "linear", {}};
+    fig.series.push_back({"SPH (18)", r.particles.columns[0], col_fi, "points"});
+    fig.series.push_back({"exact", r.particles.columns[0], col_f, "line"});
+    r.figures.push_back(fig);
+  }
+  return r;
+}
+
+Result run(const Params& p) {
+  switch (p.integer("dim")) {
+    case 1: return run_dim<1>(p);
+    case 2: return run_dim<2>(p);
+    default: return run_dim<3>(p);
+  }
+}
+
+void validate(const Params& p) {
+  const long d = p.integer("dim");
+  if (d < 1 || d > 3) throw InputError("parameter dim must be 1, 2 or 3, got " + std::to_string(d));
+  if (p.real("hfact") * 2.0 >= p.integer("n"))
+    throw InputError("support radius hfact/n must be below half the periodic box: raise n or lower hfact");
+  if (p.real("jitter") >= 0.5) throw InputError("parameter jitter must be < 0.5 (fraction of the spacing)");
+}
+
+// Lattices: the kernel smoothing error is O(h^2) (eq 5) and, with m_j/rho_j from (27), the
+// lattice-sum factor cancels in (18), so order 2 in every dimension. The gradients (19), (32)
+// keep the lattice sum of x grad W, which differs from 1 by a constant at fixed h/dx: a floor
+// (about 1e-2 in 2D and 3D at h/dx = 2 and 2.4, measured). Only in 1D at h/dx = 2 (or 4) are
+// the lattice sums exact (errata), so order 2 is expected there and nowhere else at fixed h/dx.
+// Jittered sets: the discretisation error does not fall at fixed h/dx (floor, order ~0).
+std::map<std::string, double> expected(const Params& p) {
+  if (p.real("jitter") > 0.0) return {};
+  const double ratio = p.real("hfact");
+  if (p.integer("dim") == 1 && (ratio == 2.0 || ratio == 4.0))
+    return {{"L2_f", 2.0}, {"L2_grad19", 2.0}, {"L2_grad32", 2.0}};
+  return {{"L2_f", 2.0}};
+}
+
+// 3D lattices above 64^3 take tens of seconds per level: the default sweep stops there.
+std::vector<long> levels_for(const Params& p, std::vector<long> levels) {
+  if (p.integer("dim") == 3) std::erase_if(levels, [](long n) { return n > 64; });
+  return levels;
+}
+
+std::vector<Check> gates(const Sweep& s) {
+  std::vector<Check> c;
+  // Band +-0.25 around the theoretical 2: the fitted slope over the gate levels of a lattice is
+  // within 0.1 of 2 when measured (see closing note); a lattice-sum floor or a wrong kernel
+  // normalisation shifts it by more than 0.3.
+  for (const auto& [name, p] : s.expected_order)
+    c.push_back({"order_" + name, s.observed_order.at(name), p - 0.25, p + 0.25, "O(h^2) kernel smoothing, eq (5)"});
+  return c;
+}
+
+const Registration reg{Case{
+    .name = "interpolation",
+    .summary = "interpolant (18) and gradients (19), (32) of a sine field, periodic lattices/jitter",
+    .n_counts = "particles per side of the periodic unit box (h = hfact/n)",
+    .tags = {"gate", "sweep"},
+    .params = {integer_param("n", 32, "particles per side of the unit box"),
+               integer_param("dim", 1, "dimension 1, 2 or 3"),
+               real_param("hfact", 2.0, "support radius in lattice spacings h/dx", 0.0),
+               real_param("jitter", 0.0, "random displacement per axis, fraction of dx (0 = lattice)", -1e-300),
+               integer_param("k", 1, "wave number of the field (periods per box)"),
+               integer_param("seed", 1, "random seed of the jitter")},
+    .levels = {16, 32, 64, 128, 256},
+    .gate_levels = {16, 32, 64},
+    .expected_order = expected,
+    .expected_why = "O(h^2) smoothing error (eq 5); gradients only where lattice sums are exact (1D, h/dx = 2); "
+                    "jittered sets keep a floor",
+    .variants = {{}, {"dim=2"}, {"dim=3"}, {"dim=2", "hfact=2.4"}, {"dim=2", "jitter=0.1"}},
+    .levels_for = levels_for,
+    .validate = validate,
+    .run = run,
+    .gates = gates,
+}};
+
+}  // namespace
+}  // namespace sphv
