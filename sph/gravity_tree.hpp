@@ -79,8 +79,9 @@ inline bool accept(const Tree<3>::Node& nd, double rc2, const Vec<3>& r) {
 }
 
 // Field at point r from all particles except `self` (-1 for a point that is no particle).
+// xs, ms: positions and masses in tree order (leaf particles contiguous in memory).
 template <Multipole M, Opening O>
-void walk(const Tree<3>& t, const std::vector<Vec<3>>& x, const std::vector<double>& m,
+void walk(const Tree<3>& t, const std::vector<Vec<3>>& xs, const std::vector<double>& ms,
           const GravityOptions& o, const std::vector<double>& rc2, const Vec<3>& r, long self,
           std::vector<int>& stack, Vec<3>& a,
           double& phi, long& count) {
@@ -96,9 +97,8 @@ void walk(const Tree<3>& t, const std::vector<Vec<3>>& x, const std::vector<doub
     stack.pop_back();
     if (nd.leaf()) {
       for (int q = nd.begin; q < nd.end; ++q) {
-        const int j = t.order[q];
-        if (j == self) continue;
-        add_plummer<3>(r - x[j], o.G * m[j], eps2, a, phi);
+        if (t.order[q] == self) continue;
+        add_plummer<3>(r - xs[q], o.G * ms[q], eps2, a, phi);
         ++count;
       }
     } else if (accept<O>(nd, rc2[k], r)) {
@@ -116,13 +116,19 @@ GravityField field(const Tree<3>& t, const std::vector<Vec<3>>& x, const std::ve
   const std::size_t n = targets.size();
   GravityField f{std::vector<Vec<3>>(n), std::vector<double>(n), std::vector<long>(n)};
   const std::vector<double> rc2 = critical_radius2<O>(t, o.theta);
+  std::vector<Vec<3>> xs(t.order.size());
+  std::vector<double> ms(t.order.size());
+  for (std::size_t q = 0; q < xs.size(); ++q) xs[q] = x[t.order[q]], ms[q] = m[t.order[q]];
 #pragma omp parallel
   {
     std::vector<int> stack;
 #pragma omp for schedule(dynamic, 64)
-    for (std::size_t i = 0; i < n; ++i)
-      walk<M, O>(t, x, m, o, rc2, targets[i], at_particles ? static_cast<long>(i) : -1L, stack, f.a[i], f.phi[i],
+    for (std::size_t k = 0; k < n; ++k) {
+      // Particles are visited in tree order: consecutive walks touch the same nodes (cache).
+      const std::size_t i = at_particles ? static_cast<std::size_t>(t.order[k]) : k;
+      walk<M, O>(t, xs, ms, o, rc2, targets[i], at_particles ? static_cast<long>(i) : -1L, stack, f.a[i], f.phi[i],
                  f.interactions[i]);
+    }
   }
   return f;
 }
