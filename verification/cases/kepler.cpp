@@ -3,6 +3,7 @@
 // (a) one particle on an eccentric Kepler orbit (e = 0.5, eps = 0) against Kepler's equation;
 // (b) a ring of test particles on circular orbits about a softened point mass (eps = 0.1)
 //     against the analytic circular period 2 pi r / v_c(r). G M = 1, a = 1: period 2 pi.
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
