@@ -1,0 +1,110 @@
+#pragma once
+// Shared by the conduction cases (laplacian, heat, heat_stability, heat_stiff): particle sets in
+// the periodic unit box, and the Fourier symbols of the SPH second-derivative operators on a
+// lattice, computed by direct sums over lattice offsets (no neighbour search, no pair loop, no
+// SPH operator code): the independent reference for eigenvalues and lattice errors.
+#include <cmath>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "sph/density.hpp"
+#include "sph/grid_search.hpp"
+#include "sph/kernel.hpp"
+#include "sph/lattice.hpp"
+#include "sph/scene.hpp"
+
+namespace sphv::heat {
+
+// A particle set with its neighbourhood: n per side, h = hfact dx, density by summation (27).
+template <int D>
+struct ParticleSet {
+  sph::Box<D> box = sph::unit_box<D>(true);
+  sph::Particles<D> p;
+  sph::NeighbourList nl;
+  ParticleSet(int n, double hfact, double jitter, unsigned seed = 7) {
+    p = sph::lattice<D>(n, box, 1.0, hfact, jitter, seed);
+    nl = sph::grid_search<D>(p.x, p.h, box);
+    sph::density_summation<D>(p, nl, box);
+  }
+  sph::Neighbourhood<D> nb() const { return {nl, box}; }
+  std::vector<double> coords(std::size_t i) const { return {p.x[i].data(), p.x[i].data() + D}; }
+};
+
+// Calls f(offset vector in units of dx) for every non-zero lattice offset within ratio = h/dx.
+template <int D, class F>
+void for_each_offset(double ratio, F&& f) {
+  const int k = static_cast<int>(std::ceil(ratio));
+  sph::Vec<D> o;
+  std::vector<int> idx(D, -k);
+  while (true) {
+    for (int d = 0; d < D; ++d) o[d] = idx[d];
+    if (o.norm() > 0.0 && o.norm() < ratio) f(o);
+    int d = 0;
+    while (d < D && ++idx[d] > k) idx[d++] = -k;
+    if (d == D) break;
+  }
+}
+
+// S0 = sum_j dx^D W(r_j, h) over the lattice, self term included: summation density / rho0.
+template <int D>
+double lattice_kernel_sum(double ratio) {
+  double s = sph::CubicSpline<D>::W(0.0, ratio);
+  for_each_offset<D>(ratio, [&](const sph::Vec<D>& o) { s += sph::CubicSpline<D>::W(o.norm(), ratio); });
+  return s;
+}
+
+// Eigenvalue -lambda(k) of the Brookshaw operator (69) on a lattice of spacing dx for the mode
+// exp(i k.x), with V_j = dx^D / S0:  lambda = (2 / S0) sum_r dx^D (-W'(r) / r) (1 - cos k.r).
+template <int D>
+double brookshaw_symbol(const sph::Vec<D>& k, double ratio, double dx) {
+  double s = 0.0;
+  const double h = ratio * dx;
+  for_each_offset<D>(ratio, [&](const sph::Vec<D>& o) {
+    const sph::Vec<D> r = o * dx;
+    s += -sph::CubicSpline<D>::dWdr(r.norm(), h) / r.norm() * (1.0 - std::cos(k.dot(r)));
+  });
+  return 2.0 * s * std::pow(dx, D) / lattice_kernel_sum<D>(ratio);
+}
+
+// Same for the two-pass form (56)-(59) (both variants agree on a uniform lattice): the square of
+// the gradient's symbol, lambda = |sum_r V sin(k.r) grad W(r)|^2. It vanishes at k = pi/dx:
+// the two-pass form does not damp the lattice's odd-even mode.
+template <int D>
+double two_pass_symbol(const sph::Vec<D>& k, double ratio, double dx) {
+  sph::Vec<D> g = sph::Vec<D>::Zero();
+  const double h = ratio * dx;
+  for_each_offset<D>(ratio, [&](const sph::Vec<D>& o) {
+    const sph::Vec<D> r = o * dx;
+    g += std::sin(k.dot(r)) * sph::CubicSpline<D>::gradW(r, r.norm(), h);
+  });
+  g *= std::pow(dx, D) / lattice_kernel_sum<D>(ratio);
+  return g.squaredNorm();
+}
+
+// Largest eigenvalue over the modes k = 2 pi m, 0 <= m_a <= n/2, of the periodic n^D lattice
+// (the symbols are even in each k_a).
+template <int D, class Symbol>
+double lambda_max(int n, double ratio, Symbol&& symbol) {
+  const double dx = 1.0 / n;
+  double best = 0.0;
+  std::vector<int> m(D, 0);
+  while (true) {
+    sph::Vec<D> k;
+    for (int d = 0; d < D; ++d) k[d] = 2.0 * std::numbers::pi * m[d];
+    best = std::max(best, symbol(k, ratio, dx));
+    int d = 0;
+    while (d < D && ++m[d] > n / 2) m[d++] = 0;
+    if (d == D) break;
+  }
+  return best;
+}
+
+// Relative L2 norm ||a - b|| / ||b||.
+inline double relative_l2(const std::vector<double>& a, const std::vector<double>& b) {
+  double num = 0.0, den = 0.0;
+  for (std::size_t i = 0; i < a.size(); ++i) num += (a[i] - b[i]) * (a[i] - b[i]), den += b[i] * b[i];
+  return std::sqrt(num / den);
+}
+
+}  // namespace sphv::heat
