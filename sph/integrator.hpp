@@ -44,16 +44,25 @@ void chapter_leapfrog_step(Particles<D>& p, Derivatives<D>& d, double dt, Derivs
   derivs(p, d);  // a(t + dt), needed by the next step
 }
 
-// Kick-drift-kick leapfrog: one evaluation per step, symplectic for conservative forces.
+// Kick-drift-kick leapfrog, one evaluation per step, symplectic for position-dependent forces.
+// Velocity-dependent rates (viscosity, energy, continuity, (53)) are evaluated at v and the
+// scalars predicted to t + dt (as in Phantom), not at their half-step values: with the half-step
+// values the step is only first order in those terms.
 template <int D, class Derivs>
 void kdk_leapfrog_step(Particles<D>& p, Derivatives<D>& d, double dt, Derivs&& derivs) {
   for (std::size_t i = 0; i < p.size(); ++i) {
-    p.v[i] += 0.5 * dt * d.dvdt[i];
-    p.x[i] += dt * p.v[i];
+    p.v[i] += 0.5 * dt * d.dvdt[i];  // v(t + dt/2)
+    p.x[i] += dt * p.v[i];           // r(t + dt)
   }
-  kick_scalars(p, d, 0.5 * dt);
-  derivs(p, d);
-  for (std::size_t i = 0; i < p.size(); ++i) p.v[i] += 0.5 * dt * d.dvdt[i];
+  kick_scalars(p, d, 0.5 * dt);      // scalars at t + dt/2
+  const Derivatives<D> at_t = d;
+  for (std::size_t i = 0; i < p.size(); ++i) p.v[i] += 0.5 * dt * d.dvdt[i];  // predicted v(t + dt)
+  kick_scalars(p, d, 0.5 * dt);      // predicted scalars at t + dt
+  derivs(p, d);                      // rates at t + dt (may overwrite derived scalars, e.g. rho (27))
+  // Correct the prediction: y(t + dt) = y(t + dt/2) + dt/2 rate(t + dt). Written as a change of
+  // the predicted value so that scalars a scene term sets directly keep the value it set.
+  for (std::size_t i = 0; i < p.size(); ++i) p.v[i] += 0.5 * dt * (d.dvdt[i] - at_t.dvdt[i]);
+  kick_scalars(p, at_t, -0.5 * dt);
   kick_scalars(p, d, 0.5 * dt);
 }
 

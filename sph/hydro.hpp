@@ -1,0 +1,116 @@
+#pragma once
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+
+#include "sph/grid_search.hpp"
+#include "sph/integrator.hpp"
+#include "sph/timestep.hpp"
+#include "sph/verdict.hpp"
+#include "sph/viscosity.hpp"
+
+namespace sph {
+
+// Time evolution of a hydrodynamic scene (9.3): neighbour search with the particles' current
+// support radii (a scene term may evolve them, see hydro_smoothing_length.hpp), the scene's derivatives, an integrator of 9.3.2 and a time-step criterion, with a verdict.
+
+enum class IntegratorKind { kdk, chapter };
+
+struct HydroControls {
+  IntegratorKind integrator = IntegratorKind::kdk;
+  TimeStepControl step;
+  double t_end = 0.2;
+  long max_steps = 1000000;
+};
+
+struct HydroOutcome {
+  long steps = 0;
+  double t = 0.0;
+  std::string verdict = "ok";
+};
+
+// Total mass, momentum and energy sum_i m_i (v_i^2 / 2 + u_i) of particles [first, last), and
+// the rate (96) dE/dt = sum_i m_i (v_i . dv_i/dt + du_i/dt) with the scale
+// sum_i m_i (|v_i . dv_i/dt| + |du_i/dt|) that its round-off is measured against.
+template <int D>
+struct Totals {
+  double mass = 0.0, energy = 0.0, energy_rate = 0.0, rate_scale = 0.0, momentum_scale = 0.0;
+  Vec<D> momentum = Vec<D>::Zero();
+};
+template <int D>
+Totals<D> totals(const Particles<D>& p, const Derivatives<D>& d, std::size_t first, std::size_t last) {
+  Totals<D> t;
+  for (std::size_t i = first; i < last; ++i) {
+    t.mass += p.m[i];
+    t.momentum += p.m[i] * p.v[i];
+    t.momentum_scale += p.m[i] * p.v[i].norm();
+    t.energy += p.m[i] * (0.5 * p.v[i].squaredNorm() + p.u[i]);
+    const double kin = p.v[i].dot(d.dvdt[i]);
+    t.energy_rate += p.m[i] * (kin + d.dudt[i]);
+    t.rate_scale += p.m[i] * (std::abs(kin) + std::abs(d.dudt[i]));
+  }
+  return t;
+}
+
+// Optional hooks of a run: `constrain` imposes prescribed particles (e.g. boundary layers
+// held at a known state) after every step; `evaluated` sees every derivative evaluation with
+// the state it belongs to; `stepped` sees the state after every step (step count, time).
+template <int D>
+struct HydroHooks {
+  std::function<void(Particles<D>&, double)> constrain;
+  std::function<void(const Particles<D>&, const Derivatives<D>&)> evaluated;
+  std::function<void(const Particles<D>&, const Derivatives<D>&, long, double)> stepped;
+};
+
+// Advances the particles to c.t_end. Ends with "ok", or with the first step and particle where
+// the state went bad, or with the step budget exhausted; never throws on a blow-up.
+template <int D, class... Terms>
+HydroOutcome evolve(Scene<D, Terms...>& scene, Particles<D>& p, const Box<D>& box, const HydroControls& c,
+                    const HydroHooks<D>& hooks = {}) {
+  const ArtificialViscosity<D>* visc = nullptr;
+  if constexpr ((std::is_same_v<Terms, ArtificialViscosity<D>> || ...))
+    visc = &scene.template term<ArtificialViscosity<D>>();
+  Derivatives<D> d;
+  HydroOutcome out;
+  auto derivs = [&](Particles<D>& q, Derivatives<D>& dd) {
+    const NeighbourList nl = grid_search<D>(q.x, q.h, box);
+    scene.derivatives(q, Neighbourhood<D>{nl, box}, dd);
+    if (hooks.evaluated) hooks.evaluated(q, dd);
+  };
+  auto bad_state = [&](const std::string& what) {
+    out.verdict = "unstable: step " + std::to_string(out.steps) + " (t = " + std::to_string(out.t) + "): " + what;
+    return out;
+  };
+  try {
+    if (auto b = first_bad(p)) return bad_state("initial state, particle " + std::to_string(b->particle) + ": " + b->what);
+    derivs(p, d);
+    while (out.t < c.t_end) {
+      if (out.steps >= c.max_steps)
+        return bad_state("step budget of " + std::to_string(c.max_steps) + " steps exhausted before t_end");
+      double dt = c.step.criterion == TimeStepCriterion::courant
+                      ? courant_time_step(p, d, visc ? visc->mu_max : std::vector<double>{},
+                                          visc ? visc->alpha : 0.0, visc ? visc->beta : 0.0, c.step)
+                      : chapter_time_step(p, c.step);
+      if (!(dt > 0.0) || !std::isfinite(dt)) return bad_state("time step not positive and finite");
+      dt = std::min(dt, c.t_end - out.t);
+      if (c.integrator == IntegratorKind::kdk) kdk_leapfrog_step(p, d, dt, derivs);
+      else chapter_leapfrog_step(p, d, dt, derivs);
+      ++out.steps;
+      out.t = (c.t_end - out.t <= dt) ? c.t_end : out.t + dt;
+      if (hooks.constrain) hooks.constrain(p, out.t);
+      if (auto b = first_bad(p)) {
+        out.verdict = unstable_verdict(out.steps, out.t, *b);
+        return out;
+      }
+      if (hooks.stepped) hooks.stepped(p, d, out.steps, out.t);
+    }
+  } catch (const std::invalid_argument& e) {  // e.g. a support radius grown beyond a periodic box
+    return bad_state(e.what());
+  }
+  return out;
+}
+
+}  // namespace sph

@@ -1,0 +1,291 @@
+// Cases `sod`, `sod2d`, `sod3d`: Sod's shock tube and Toro's Riemann problems 1-5 (or any
+// left/right state) with the hydrodynamics of 9.2-9.4.2, against the exact Riemann solver
+// (reference/riemann, Toro ch. 4). Errors are L1 over the tube [0, 1] at t_end.
+#include <charconv>
+#include <cmath>
+#include <map>
+
+#include "verification/case.hpp"
+#include "verification/cases/sod_tube.hpp"
+#include "verification/sweep.hpp"
+
+namespace sphv {
+namespace {
+
+struct Preset {
+  reference::GasState l, r;
+  double t_end;
+};
+
+// Toro, table 4.1 (gamma = 1.4, x0 = 0.5 on [0, 1]).
+const std::map<std::string, Preset> presets = {
+    {"sod", {{1.0, 0.0, 1.0}, {0.125, 0.0, 0.1}, 0.25}},                                // test 1
+    {"toro2", {{1.0, -2.0, 0.4}, {1.0, 2.0, 0.4}, 0.15}},                               // 123, near vacuum
+    {"toro3", {{1.0, 0.0, 1000.0}, {1.0, 0.0, 0.01}, 0.012}},                           // left blast wave
+    {"toro4", {{1.0, 0.0, 0.01}, {1.0, 0.0, 100.0}, 0.035}},                            // right blast wave
+    {"toro5", {{5.99924, 19.5975, 460.894}, {5.99242, -6.19633, 46.0950}, 0.035}},      // colliding shocks
+};
+
+const char* const state_keys[] = {"rho_l", "v_l", "p_l", "rho_r", "v_r", "p_r", "gamma", "t_end", "x0"};
+
+// A state parameter: "preset" (take the preset's value) or a number.
+double state_value(const Params& p, const std::string& key, double preset_value) {
+  const std::string& s = p.text(key);
+  if (s == "preset") return preset_value;
+  double v = 0.0;
+  const auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+  if (ec != std::errc() || ptr != s.data() + s.size() || !std::isfinite(v))
+    throw InputError("parameter " + key + ": '" + s + "' is not a finite number");
+  return v;
+}
+
+// The problem from the preset and any overrides, with one clear line for bad input.
+TubeProblem problem(const Params& p) {
+  const Preset& ps = presets.at(p.text("preset"));
+  TubeProblem pr{{state_value(p, "rho_l", ps.l.rho), state_value(p, "v_l", ps.l.u), state_value(p, "p_l", ps.l.p)},
+                 {state_value(p, "rho_r", ps.r.rho), state_value(p, "v_r", ps.r.u), state_value(p, "p_r", ps.r.p)},
+                 state_value(p, "gamma", 1.4), state_value(p, "x0", 0.5), state_value(p, "t_end", ps.t_end)};
+  if (!(pr.gamma > 1.0)) throw InputError("gamma must be > 1, got " + p.text("gamma"));
+  if (!(pr.left.rho > 0.0 && pr.right.rho > 0.0)) throw InputError("densities rho_l, rho_r must be > 0");
+  if (!(pr.left.p > 0.0 && pr.right.p > 0.0)) throw InputError("pressures p_l, p_r must be > 0");
+  if (!(pr.x0 > 0.0 && pr.x0 < 1.0)) throw InputError("x0 must lie inside the tube (0, 1), got " + p.text("x0"));
+  if (!(pr.t_end > 0.0)) throw InputError("t_end must be > 0, got " + p.text("t_end"));
+  try {
+    reference::RiemannSolution(pr.left, pr.right, pr.gamma, pr.x0);
+  } catch (const reference::RiemannError& e) {
+    throw InputError(e.what());
+  }
+  return pr;
+}
+
+TubeMethod method(const Params& p) {
+  TubeMethod m;
+  m.density = p.text("density");
+  m.euler = p.text("euler");
+  m.energy = p.text("energy");
+  m.lambda = p.real("lambda");
+  m.alpha = p.real("alpha");
+  m.beta = p.real("beta");
+  m.eps = p.real("eps");
+  m.h_scale = p.text("visc_h") == "half" ? 0.5 : 1.0;
+  m.controls.integrator = p.text("integrator") == "kdk" ? sph::IntegratorKind::kdk : sph::IntegratorKind::chapter;
+  m.controls.step.criterion =
+      p.text("timestep") == "courant" ? sph::TimeStepCriterion::courant : sph::TimeStepCriterion::chapter43;
+  m.controls.step.C = p.real("C");
+  m.controls.step.C_force = p.real("C_force");
+  m.controls.step.C_energy = p.real("C_energy");
+  m.controls.step.eta = p.real("eta");
+  m.hfact = p.real("hfact");
+  m.controls.max_steps = p.integer("max_steps");
+  return m;
+}
+
+Figure profile(const std::string& field, const std::string& label, const TubeRun& run,
+               const std::vector<double>& value, const reference::RiemannSolution& exact, double t, long n, int dim) {
+  Figure f{"profile_" + field, "Shock tube, " + std::to_string(dim) + "D, n = " + std::to_string(n) + ": " + label +
+                                   " at t = " + std::to_string(t),
+           "x", label};
+  Series pts{"SPH particles", {}, {}, "points"};
+  const std::size_t stride = std::max<std::size_t>(1, run.x.size() / 4000);
+  for (std::size_t i = 0; i < run.x.size(); i += stride)
+    if (run.x[i] >= 0.0 && run.x[i] <= 1.0) pts.x.push_back(run.x[i]), pts.y.push_back(value[i]);
+  Series line{"exact (Toro)", {}, {}, "line"};
+  for (int k = 0; k <= 2000; ++k) {
+    const double x = k / 2000.0;
+    const auto s = exact.sample(x, t);
+    line.x.push_back(x);
+    line.y.push_back(field == "rho" ? s.rho : field == "v" ? s.u : field == "p" ? s.p : s.e);
+  }
+  f.series = {pts, line};
+  return f;
+}
+
+template <int D>
+Result run(const Params& p) {
+  const TubeProblem pr = problem(p);
+  const long n = p.integer("n");
+  const TubeRun run = simulate_tube<D>(pr, method(p), n);
+  const reference::RiemannSolution exact(pr.left, pr.right, pr.gamma, pr.x0);
+  Result r;
+  r.n_particles = run.x.size();
+  r.verdict = run.outcome.verdict;
+  if (r.verdict == "ok" && p.text("preset") != "sod") r.verdict = "stable";
+  if (r.verdict == "ok" || r.verdict == "stable") {
+    // L1 over [0, 1]: particle volumes m/rho as weights.
+    double vol = 0.0, e_rho = 0.0, e_v = 0.0, e_p = 0.0, e_u = 0.0;
+    for (std::size_t i = 0; i < run.active; ++i) {
+      if (run.x[i] < 0.0 || run.x[i] > 1.0) continue;
+      const auto s = exact.sample(run.x[i], pr.t_end);
+      const double w = run.m[i] / run.rho[i];
+      vol += w;
+      e_rho += w * std::abs(run.rho[i] - s.rho);
+      e_v += w * std::abs(run.v[i] - s.u);
+      e_p += w * std::abs(run.p[i] - s.p);
+      e_u += w * std::abs(run.u[i] - s.e);
+    }
+    r.errors = {{"L1_rho", e_rho / vol}, {"L1_v", e_v / vol}, {"L1_p", e_p / vol}, {"L1_u", e_u / vol}};
+    r.figures = {profile("rho", "density rho", run, run.rho, exact, pr.t_end, n, D),
+                 profile("v", "velocity v_x", run, run.v, exact, pr.t_end, n, D),
+                 profile("p", "pressure p", run, run.p, exact, pr.t_end, n, D),
+                 profile("u", "specific internal energy u", run, run.u, exact, pr.t_end, n, D)};
+  }
+  r.extra = {{"steps", run.outcome.steps},
+             {"t_reached", run.outcome.t},
+             {"x_extent", {run.box_lo, run.box_hi}},
+             {"periodic_width", run.width},
+             {"p_star", exact.p_star()},
+             {"u_star", exact.u_star()},
+             {"momentum_drift", run.momentum_drift},
+             {"energy_drift", run.energy_drift},
+             {"energy_rate", run.energy_rate},
+             {"mass_drift", run.mass_drift},
+             {"conservation_note", "active particles only; the boundary layers exert the end pressures"}};
+  const char* axes[] = {"x", "y", "z"};
+  for (int d = 0; d < D; ++d) r.particles.add(axes[d], run.position[d]);
+  r.particles.add("vx", run.v);
+  r.particles.add("m", run.m);
+  r.particles.add("rho", run.rho);
+  r.particles.add("p", run.p);
+  r.particles.add("u", run.u);
+  r.particles.add("h", run.h);
+  return r;
+}
+
+std::vector<ParamSpec> params(long n_default, double hfact_default) {
+  std::vector<ParamSpec> ps = {
+      integer_param("n", n_default, "particles per unit length on the left (left spacing 1/n)"),
+      choice_param("preset", "sod", "Riemann problem: sod = Toro 1; toro2 123; toro3/4 blast waves; toro5 collision",
+                   {"sod", "toro2", "toro3", "toro4", "toro5"}),
+  };
+  for (const char* k : state_keys)
+    ps.push_back({k, ParamSpec::Kind::Text, "preset", "number overriding the preset (default: the preset's)"});
+  for (auto&& q : std::vector<ParamSpec>{
+           choice_param("density", "summation", "density: summation (27) or continuity (29)/(33)",
+                        {"summation", "continuity29", "continuity33"}),
+           choice_param("euler", "23", "Euler form (22), (23), (25) with lambda, (26)", {"22", "23", "25", "26"}),
+           choice_param("energy", "auto", "energy form; auto = the Euler form's partner (22-37, 23-41, 25-lambda, 26-42)",
+                        {"auto", "37", "38", "40", "41", "42"}),
+           real_param("lambda", 1.5, "lambda of (25)"),
+           choice_param("integrator", "kdk", "kick-drift-kick, or the chapter's leapfrog of 9.3.2", {"kdk", "chapter"}),
+           choice_param("timestep", "courant", "signal-speed Courant + acceleration criterion, or (43)",
+                        {"courant", "chapter"}),
+           real_param("C", 0.3, "Courant number", 0.0),
+           real_param("C_force", 0.25, "acceleration criterion factor", 0.0),
+           real_param("C_energy", 0.25, "cooling criterion dt <= C_energy u / |du/dt| (0: off)", -1e-300),
+           real_param("eta", 0.3, "eta of (43)", 0.0),
+           real_param("alpha", 1.0, "artificial viscosity alpha (45)", -1e-300),
+           real_param("beta", 2.0, "artificial viscosity beta (45)", -1e-300),
+           real_param("eps", 0.01, "epsilon of (46)", 0.0),
+           choice_param("visc_h", "half", "h in mu_ij (46): half the support radius (Monaghan) or the full one",
+                        {"half", "full"}),
+           real_param("hfact", hfact_default, "initial support radius / particle spacing (50)", 0.0),
+           integer_param("max_steps", 200000, "step budget (ends with a verdict)"),
+       })
+    ps.push_back(q);
+  return ps;
+}
+
+// Checks shared by the three cases. `l1_max`: bound on L1(rho) at the finest gate level.
+// Momentum and energy of the tube are not gated here: the boundary layers push on the tube ends
+// (impulse (p_l - p_r) t); conservation is gated on an isolated periodic gas in tests/hydro.cpp.
+std::vector<Check> tube_gates(const Sweep& s, double l1_max, const std::string& l1_why, bool gate_order) {
+  std::vector<Check> c;
+  const Params p = find_case(s.case_name).parse(s.settings);
+  const bool chapter_dt = p.text("timestep") == "chapter";
+  for (std::size_t k = 0; k < s.runs.size(); ++k) {
+    const bool stable = s.runs[k].verdict == "ok" || s.runs[k].verdict == "stable";
+    const std::string level = "n" + std::to_string(s.levels[k]);
+    if (!chapter_dt) {
+      c.push_back({level + "_stable", double(stable), 1.0, 1.0, "runs to t_end with a finite, positive state"});
+    } else {
+      // (43) ignores the sound speed: from rest it takes dt = eta^2 (errata), 36x the Courant
+      // step at n = 400. Measured: the first step ends with a particle's h <= 0 at every level.
+      c.push_back({level + "_unstable", double(!stable), 1.0, 1.0, "(43) from rest: dt = eta^2 >> Courant limit"});
+    }
+  }
+  if (!s.settings.empty()) return c;
+  const auto& fine = s.runs.back();
+  if (fine.errors.count("L1_rho")) c.push_back({"L1_rho", fine.errors.at("L1_rho"), 0.0, l1_max, l1_why});
+  if (!gate_order) {
+    // 2D/3D lattices: measured orders 0.3-0.6 on the few affordable levels (pre-asymptotic,
+    // transverse lattice noise); gate only that the error falls with resolution.
+    if (fine.errors.count("L1_rho") && s.runs.front().errors.count("L1_rho"))
+      c.push_back({"L1_rho_falls", fine.errors.at("L1_rho") / s.runs.front().errors.at("L1_rho"), 0.0, 0.9,
+                   "finest / coarsest gate level: must fall with resolution (measured 0.64 in 2D, 0.83 in 3D)"});
+    return c;
+  }
+  for (const auto& [name, order] : s.expected_order)
+    if (s.observed_order.count(name))
+      // Measured 0.72-0.88 on the gate levels 200..800 (0.75-0.88 on 100..1600; the local slope
+      // of L1_v and L1_u rises from 0.4 to 1.0 across 100..1600: pre-asymptotic start-up error
+      // at the contact); band [0.5, 1.3] around the expected 1.
+      c.push_back({"order_" + name, s.observed_order.at(name), 0.5, 1.3,
+                   "discontinuities smeared over a fixed number of particles: first order"});
+  return c;
+}
+
+std::map<std::string, double> first_order(const Params& p) {
+  if (p.text("timestep") == "chapter") return {};  // unstable, no errors
+  // (29) is the Eulerian rate d(rho)/dt + v . grad rho: wrong by v . grad rho wherever a
+  // density gradient moves (the contact), an O(1) error that does not converge.
+  if (p.text("density") == "continuity29") return {{"L1_rho", 0.0}, {"L1_v", 0.0}, {"L1_p", 0.0}, {"L1_u", 0.0}};
+  return {{"L1_rho", 1.0}, {"L1_v", 1.0}, {"L1_p", 1.0}, {"L1_u", 1.0}};
+}
+
+const char* const why_first_order =
+    "shock and contact are smeared over a fixed number of particles (width ~ h ~ 1/n), so their L1 "
+    "contribution is O(1/n); the smooth rarefaction converges faster but the discontinuities limit the "
+    "total to first order (grid codes: the same, Athena++ gates ratio <= 0.6 per doubling)";
+
+Case make_case(int dim) {
+  Case c;
+  c.name = dim == 1 ? "sod" : "sod" + std::to_string(dim) + "d";
+  c.summary = dim == 1 ? "Sod / Toro 1-5 shock tubes in 1D against the exact Riemann solver"
+                       : "Sod shock tube, " + std::to_string(dim) + "D lattice periodic across, against the exact solver";
+  c.n_counts = "particles per unit length on the left state (equal masses: the right has n (rho_r/rho_l)^(1/D))";
+  c.tags = {"gate", "sweep"};
+  // 1D: support radius 4 dx, where lattice sums are exact (errata); at 2.4 dx the kernel-sum
+  // error (~2e-3 in rho) is a floor that stops convergence near n = 1600. 2D/3D: 2.4 dx
+  // (Phantom's default, ~18 and ~58 neighbours).
+  c.params = params(dim == 1 ? 400 : dim == 2 ? 100 : 32, dim == 1 ? 4.0 : 2.4);
+  c.expected_order = first_order;
+  c.expected_why = why_first_order;
+  c.validate = [](const Params& p) { problem(p); };
+  if (dim == 1) {
+    c.levels = {100, 200, 400, 800, 1600};
+    c.gate_levels = {200, 400, 800};
+    c.variants = {{},
+                  {"density=continuity33"},
+                  {"density=continuity29"},
+                  {"euler=26"},
+                  {"euler=25"},
+                  {"euler=22"},
+                  {"energy=38"},
+                  {"integrator=chapter"},
+                  {"timestep=chapter"},
+                  {"visc_h=full"}};
+    c.run = run<1>;
+  } else if (dim == 2) {
+    c.levels = {50, 100, 200};
+    c.gate_levels = {25, 50, 100};
+    c.run = run<2>;
+  } else {
+    c.levels = {12, 16, 24, 32};
+    c.gate_levels = {12, 16};
+    c.run = run<3>;
+  }
+  c.gates = [dim](const Sweep& s) {
+    // Measured L1(rho) at the finest gate level (1D n = 800: 4.02e-3; 2D n = 100: 1.91e-2;
+    // 3D n = 16: 4.82e-2) plus a 20 % margin.
+    const double bound = dim == 1 ? 4.8e-3 : dim == 2 ? 2.3e-2 : 5.8e-2;
+    return tube_gates(s, bound, "measured at the finest gate level + 20 % margin", dim == 1);
+  };
+  return c;
+}
+
+const Registration reg1{make_case(1)};
+const Registration reg2{make_case(2)};
+const Registration reg3{make_case(3)};
+
+}  // namespace
+}  // namespace sphv

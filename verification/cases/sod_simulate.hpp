@@ -1,0 +1,197 @@
+#pragma once
+// The templated shock-tube simulation; included only by sod_tube_{1d,2d,3d}.cpp.
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <variant>
+
+#include "sph/energy.hpp"
+#include "sph/eos.hpp"
+#include "sph/euler.hpp"
+#include "sph/hydro_density.hpp"
+#include "sph/hydro_smoothing_length.hpp"
+#include "verification/cases/sod_tube.hpp"
+
+namespace sphv {
+namespace tube {
+
+// Equal-mass particles, the density jump made by the spacing (9.3.1). Left spacing 1/n; in 2D/3D
+// the tube is periodic across with a width of several support radii, the right side keeps the
+// same width with its own (near-isotropic) lattice. The particles [0, active) reach beyond [0, 1]
+// far enough that no wave reaches their ends before t_end; beyond them, boundary layers of
+// 2.5 support radii continue the lattice and are held at the initial state, moving with the
+// initial velocity (9.4.1: no free surface, no boundary density deficit).
+template <int D>
+struct Layout {
+  sph::Particles<D> p, initial;
+  sph::Box<D> box;
+  std::size_t active = 0;
+};
+
+template <int D>
+Layout<D> layout(const TubeProblem& pr, double hfact, long n, TubeRun& run) {
+  const reference::RiemannSolution exact(pr.left, pr.right, pr.gamma, pr.x0);
+  const double dxl = 1.0 / n, mass = pr.left.rho * std::pow(dxl, D);
+  const double s = std::pow(pr.left.rho / pr.right.rho, 1.0 / D);  // isotropic spacing ratio R/L
+  const int ntl = D == 1 ? 1 : static_cast<int>(std::ceil(2.5 * hfact * std::max(1.0, s)));
+  const double width = ntl * dxl;
+  const int ntr = D == 1 ? 1 : std::max(1, static_cast<int>(std::lround(ntl / s)));
+  const double dyr = width / ntr, dxr = mass / (pr.right.rho * std::pow(dyr, D - 1));
+  const double hl = hfact * dxl, hr = hfact * std::pow(mass / pr.right.rho, 1.0 / D);
+  const double margin = 4.0 * std::max(hl, hr);
+  const double a = std::min(0.0, pr.x0 + exact.slowest() * pr.t_end) - std::max(0.0, pr.left.u) * pr.t_end - margin;
+  const double b = std::max(1.0, pr.x0 + exact.fastest() * pr.t_end) + std::max(0.0, -pr.right.u) * pr.t_end + margin;
+  const long nl = static_cast<long>(std::ceil((pr.x0 - a) / dxl)), nr = static_cast<long>(std::ceil((b - pr.x0) / dxr));
+  const long gl = static_cast<long>(std::ceil(2.5 * hl / dxl)), gr = static_cast<long>(std::ceil(2.5 * hr / dxr));
+  long per_l = 1, per_r = 1;
+  for (int d = 1; d < D; ++d) per_l *= ntl, per_r *= ntr;
+
+  Layout<D> L;
+  sph::Particles<D>& p = L.p;
+  p.resize((nl + gl) * per_l + (nr + gr) * per_r);
+  std::size_t k = 0;
+  // Slabs [from, to) on one side of x0 (side = -1 left, +1 right).
+  auto place = [&](long from, long to, double side, double dx, int nt, long per, const reference::GasState& st) {
+    for (long i = from; i < to; ++i)
+      for (long t = 0; t < per; ++t, ++k) {
+        p.x[k][0] = pr.x0 + side * (i + 0.5) * dx;
+        long rest = t;
+        for (int d = 1; d < D; ++d) p.x[k][d] = (static_cast<double>(rest % nt) + 0.5) * (width / nt), rest /= nt;
+        p.v[k][0] = st.u;
+        p.m[k] = mass;
+        p.rho[k] = st.rho;
+        p.u[k] = st.p / ((pr.gamma - 1.0) * st.rho);
+      }
+  };
+  place(0, nl, -1.0, dxl, ntl, per_l, pr.left);
+  place(0, nr, +1.0, dxr, ntr, per_r, pr.right);
+  L.active = k;
+  place(nl, nl + gl, -1.0, dxl, ntl, per_l, pr.left);
+  place(nr, nr + gr, +1.0, dxr, ntr, per_r, pr.right);
+  sph::smoothing_length_from_density(p, hfact);  // (50)
+  L.box.lo = sph::Vec<D>::Zero();
+  L.box.hi = sph::Vec<D>::Constant(width);
+  L.box.lo[0] = pr.x0 - (nl + gl) * dxl;
+  L.box.hi[0] = pr.x0 + (nr + gr) * dxr;
+  L.box.periodic.fill(true);
+  L.box.periodic[0] = false;
+  L.initial = p;
+  run.box_lo = pr.x0 - nl * dxl;
+  run.box_hi = pr.x0 + nr * dxr;
+  run.width = D == 1 ? 0.0 : width;
+  return L;
+}
+
+// Runs one scene type to t_end with the boundary layers held, recording the conservation
+// diagnostics of the active particles.
+template <int D, class... Terms>
+void advance(sph::Scene<D, Terms...> scene, Layout<D>& L, const sph::HydroControls& c, TubeRun& run) {
+  sph::Particles<D>& p = L.p;
+  const std::size_t na = L.active;
+  sph::Derivatives<D> at_rest;
+  at_rest.reset(p.size());
+  const sph::Totals<D> first = sph::totals(p, at_rest, 0, na);
+  double pscale = first.momentum_scale;
+  sph::HydroHooks<D> hooks;
+  hooks.constrain = [&](sph::Particles<D>& q, double t) {
+    for (std::size_t i = na; i < q.size(); ++i) {
+      q.x[i] = L.initial.x[i] + t * L.initial.v[i];
+      q.v[i] = L.initial.v[i];
+      q.rho[i] = L.initial.rho[i];
+      q.u[i] = L.initial.u[i];
+      q.h[i] = L.initial.h[i];
+    }
+  };
+  hooks.evaluated = [&](const sph::Particles<D>& q, const sph::Derivatives<D>& d) {
+    const auto t = sph::totals(q, d, 0, na);
+    if (t.rate_scale > 0.0) run.energy_rate = std::max(run.energy_rate, std::abs(t.energy_rate) / t.rate_scale);
+  };
+  hooks.stepped = [&](const sph::Particles<D>& q, const sph::Derivatives<D>& d, long, double) {
+    const auto t = sph::totals(q, d, 0, na);
+    pscale = std::max(pscale, t.momentum_scale);
+    run.momentum_drift = std::max(run.momentum_drift, (t.momentum - first.momentum).norm() / pscale);
+    run.mass_drift = std::max(run.mass_drift, std::abs(t.mass - first.mass) / first.mass);
+    run.energy_drift = std::abs(t.energy - first.energy) / first.energy;
+  };
+  run.outcome = sph::evolve(scene, p, L.box, c, hooks);
+}
+
+template <int D, class F>
+void with_density(const TubeMethod& m, F&& f) {
+  using enum sph::ContinuityForm;
+  if (m.density == "summation") f(sph::SummationDensity<D>{});
+  else if (m.density == "continuity29") f(sph::ContinuityDensity<D, direct29>{});
+  else if (m.density == "continuity33") f(sph::ContinuityDensity<D, difference33>{});
+  else throw std::invalid_argument("unknown density method " + m.density);
+}
+
+template <int D, class F>
+void with_euler(const TubeMethod& m, F&& f) {
+  if (m.euler == "22") f(sph::EulerDirect<D>{});
+  else if (m.euler == "23") f(sph::EulerSymmetric<D, sph::Lambda1>{});
+  else if (m.euler == "25") f(sph::EulerSymmetric<D, sph::LambdaGeneral>{{m.lambda}});
+  else if (m.euler == "26") f(sph::EulerSymmetric<D, sph::Lambda2>{});
+  else throw std::invalid_argument("unknown Euler form " + m.euler);
+}
+
+// "auto" pairs each Euler form with its energy form: 22-37, 23-41, 25-(25's lambda form), 26-42.
+template <int D, class F>
+void with_energy(const TubeMethod& m, F&& f) {
+  using enum sph::EnergyForm;
+  const std::string e = m.energy != "auto" ? m.energy
+                        : m.euler == "22"  ? "37"
+                        : m.euler == "23"  ? "41"
+                        : m.euler == "25"  ? "25"
+                                           : "42";
+  if (e == "37") f(sph::EnergyAsymmetric<D, direct37>{});
+  else if (e == "38") f(sph::EnergyAsymmetric<D, difference38>{});
+  else if (e == "40") f(sph::EnergyAsymmetric<D, swapped40>{});
+  else if (e == "41") f(sph::EnergySymmetric<D, sph::Lambda1>{});
+  else if (e == "42") f(sph::EnergySymmetric<D, sph::Lambda2>{});
+  else if (e == "25") f(sph::EnergySymmetric<D, sph::LambdaGeneral>{{m.lambda}});
+  else throw std::invalid_argument("unknown energy form " + e);
+}
+
+}  // namespace tube
+
+template <int D>
+TubeRun simulate_tube(const TubeProblem& pr, const TubeMethod& m, long n) {
+  TubeRun run;
+  sph::HydroControls controls = m.controls;
+  controls.t_end = pr.t_end;
+  tube::Layout<D> L = tube::layout<D>(pr, m.hfact, n, run);
+  // The continuity equation starts from the summation density (27) of the initial particles,
+  // not from the sharp jump: a sharp jump puts the first low-density particle in a runaway.
+  if (m.density != "summation")
+    sph::density_summation(L.p, sph::grid_search<D>(L.p.x, L.p.h, L.box), L.box);
+  const sph::ArtificialViscosity<D> visc{m.alpha, m.beta, m.eps, m.h_scale, {}};
+  const sph::EquationOfState<D, sph::IdealGas> eos{{pr.gamma}};
+  // The runtime choice of forms is resolved here, once, into a scene type.
+  tube::with_density<D>(m, [&](auto density) {
+    tube::with_euler<D>(m, [&](auto euler) {
+      tube::with_energy<D>(m, [&](auto energy) {
+        using S = sph::Scene<D, decltype(density), sph::EquationOfState<D, sph::IdealGas>, decltype(euler),
+                             decltype(energy), sph::ArtificialViscosity<D>, sph::SmoothingLengthRate<D>>;
+        tube::advance(S{{density, eos, euler, energy, visc, {}}}, L, controls, run);
+      });
+    });
+  });
+  const sph::Particles<D>& p = L.p;
+  run.active = L.active;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    run.x.push_back(p.x[i][0]);
+    run.v.push_back(p.v[i][0]);
+    run.rho.push_back(p.rho[i]);
+    run.u.push_back(p.u[i]);
+    run.p.push_back((pr.gamma - 1.0) * p.rho[i] * p.u[i]);
+    run.m.push_back(p.m[i]);
+    run.h.push_back(p.h[i]);
+  }
+  for (int d = 0; d < D; ++d) {
+    run.position.emplace_back();
+    for (std::size_t i = 0; i < p.size(); ++i) run.position.back().push_back(p.x[i][d]);
+  }
+  return run;
+}
+
+}  // namespace sphv

@@ -1,0 +1,50 @@
+#pragma once
+// Shock tubes (case sod and its 2D/3D versions): the problem, the SPH method chosen at run
+// time, and the simulation, instantiated once per dimension (sod_tube_1d.cpp, ...).
+#include <string>
+#include <vector>
+
+#include "reference/riemann.hpp"
+#include "sph/hydro.hpp"
+
+namespace sphv {
+
+// A Riemann problem on the tube [0, 1] (Toro's domain), ideal gas.
+struct TubeProblem {
+  reference::GasState left, right;
+  double gamma, x0, t_end;
+};
+
+// The method: every runtime choice of 9.2-9.4.2, dispatched once to a scene type.
+struct TubeMethod {
+  std::string density = "summation";  // summation (27) | continuity29 | continuity33
+  std::string euler = "23";           // 22 | 23 | 25 | 26
+  std::string energy = "auto";        // auto (the Euler form's partner) | 37 | 38 | 40 | 41 | 42
+  double lambda = 1.5;                // for (25)
+  double hfact = 2.4;                 // initial support radius / particle spacing, (50)
+  double alpha = 1.0, beta = 2.0, eps = 0.01, h_scale = 0.5;  // artificial viscosity (45), (46)
+  sph::HydroControls controls;
+};
+
+// Final particle state reduced to the tube's axis, plus the run's diagnostics. Particles
+// [0, active) are evolved; the rest are the boundary layers held at the initial state.
+struct TubeRun {
+  std::vector<double> x, v, rho, p, u, m, h;
+  std::vector<std::vector<double>> position;  // all coordinates, for particles.csv
+  std::size_t active = 0;
+  sph::HydroOutcome outcome;
+  double box_lo = 0.0, box_hi = 1.0, width = 0.0;  // x extent of the active particles at t = 0, periodic width
+  double momentum_drift = 0.0;     // max_t |P(t) - P(0)| / max_t sum m |v|
+  double energy_drift = 0.0;       // |E(t_end) - E(0)| / E(0)
+  double energy_rate = 0.0;        // max_t |dE/dt| / rate scale (96)
+  double mass_drift = 0.0;         // |M(t) - M(0)| / M(0)
+};
+
+template <int D>
+TubeRun simulate_tube(const TubeProblem& pr, const TubeMethod& m, long n);
+
+extern template TubeRun simulate_tube<1>(const TubeProblem&, const TubeMethod&, long);
+extern template TubeRun simulate_tube<2>(const TubeProblem&, const TubeMethod&, long);
+extern template TubeRun simulate_tube<3>(const TubeProblem&, const TubeMethod&, long);
+
+}  // namespace sphv
