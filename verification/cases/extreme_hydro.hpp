@@ -22,6 +22,7 @@
 #include "sph/lattice.hpp"
 #include "sph/smoothing_length.hpp"
 #include "verification/params.hpp"
+#include "verification/cases/sod_tube.hpp"
 #include "verification/result.hpp"
 
 namespace sphv::extreme {
@@ -157,6 +158,32 @@ Table particle_table(const sph::Particles<D>& p) {
   t.add("u", p.u);
   t.add("h", p.h);
   return t;
+}
+
+}  // namespace sphv::extreme
+
+// ---- Shock tubes through the hydro helper's tube (sod_tube.hpp): variable h by (53). ----
+namespace sphv::extreme {
+
+// L1 norm of rho - rho_exact over [lo, hi], weighted by particle volume m / rho.
+inline double tube_l1_rho(const TubeRun& run, const reference::RiemannSolution& exact, double t, double lo, double hi) {
+  double vol = 0.0, e = 0.0;
+  for (std::size_t i = 0; i < run.active; ++i) {
+    if (run.x[i] < lo || run.x[i] > hi) continue;
+    const double w = run.m[i] / run.rho[i];
+    vol += w;
+    e += w * std::abs(run.rho[i] - exact.sample(run.x[i], t).rho);
+  }
+  return vol > 0.0 ? e / vol : 0.0;
+}
+
+// A gas at rest with a pressure jump p_ratio : 1 at x0 = 0.5 (density 1, gamma 1.4), run until
+// the fastest wave has travelled 0.35.
+inline TubeProblem pressure_jump(double p_ratio) {
+  TubeProblem pr{{1.0, 0.0, p_ratio}, {1.0, 0.0, 1.0}, 1.4, 0.5, 1.0};
+  const reference::RiemannSolution exact(pr.left, pr.right, pr.gamma, pr.x0);
+  pr.t_end = 0.35 / std::max(std::abs(exact.slowest()), std::abs(exact.fastest()));
+  return pr;
 }
 
 }  // namespace sphv::extreme

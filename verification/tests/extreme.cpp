@@ -84,3 +84,7 @@ TEST_CASE("noh reference: published post-shock states", "[reference][noh]") {
 TEST_CASE("gate: stability_map_heat", "[gate][extreme]") { gate("stability_map_heat"); }
 TEST_CASE("gate: sedov", "[gate][extreme][sedov]") { gate("sedov"); }
 TEST_CASE("gate: noh", "[gate][extreme][noh]") { gate("noh"); }
+TEST_CASE("gate: extreme_tubes", "[gate][extreme]") { gate("extreme_tubes"); }
+TEST_CASE("gate: extreme_timestep43", "[gate][extreme]") { gate("extreme_timestep43"); }
+TEST_CASE("gate: stability_map_hydro", "[gate][extreme]") { gate("stability_map_hydro"); }
+TEST_CASE("gate: extreme_degenerate", "[gate][extreme]") { gate("extreme_degenerate"); }
