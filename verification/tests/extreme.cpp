@@ -11,7 +11,7 @@ namespace {
 void gate(const std::string& name) {
   const auto& c = sphv::find_case(name);
   for (const auto& settings : c.variants) {
-    auto s = sphv::run_sweep(c, c.gate_levels, settings);
+    auto s = sphv::run_sweep(c, c.sweep_levels(settings, true), settings);  // levels_for per variant
     for (const auto& ch : s.checks) {
       INFO(name << " [" << s.variant() << "] " << ch.name << " = " << ch.value << " in [" << ch.lo << ", " << ch.hi
                 << "]: " << ch.why);
