@@ -130,7 +130,7 @@ const Registration reg{Case{
     .gate_levels = {16},
     .expected_order = [](const Params&) { return std::map<std::string, double>{}; },
     .expected_why = "no order: the drifts are round-off where 9.5 applies, independent of n",
-    .variants = {{}, {"visc=0"}, {"dim=3"}, {"dim=3", "visc=0"}, {"integrator=chapter"}},
+    .variants = {{}, {"visc=0"}, {"dim=3", "hfact=2"}},
     .levels_for = [](const Params& p, std::vector<long> l) {
       if (p.text("dim") == "3")
         for (auto& n : l) n = std::max(4L, n / 2);  // 3D: half the particles per diameter
