@@ -24,8 +24,8 @@ import numpy as np  # noqa: E402
 
 def load_sweeps(root):
     files = sorted(root.glob("**/sweep.json"))
-    if not files:
-        sys.exit(f"report.py: error: no sweep.json under {root}")
+    if not files and not (root / "bench.json").exists():
+        sys.exit(f"report.py: error: no sweep.json or bench.json under {root}")
     sweeps = {}
     for f in files:
         s = json.loads(f.read_text())
@@ -264,13 +264,31 @@ def main():
             rows.append((case, s["variant"], s["passed"], ", ".join(verdicts), s["wall_time_s"]))
         body.append("</table>")
 
+    bench_file = a.results / "bench.json"
+    if bench_file.exists():
+        b = json.loads(bench_file.read_text())
+        pr = b["provenance"]
+        body.append(f"<h2 id='bench'>Benchmarks</h2><p>{html.escape(b['benchmark'])}; {html.escape(str(pr.get('cpu')))}, "
+                    f"{pr.get('cores')} cores, build {html.escape(str(pr.get('build_type')))} "
+                    f"({html.escape(str(pr.get('cxx_flags')))}), {html.escape(str(pr.get('compiler')))}. "
+                    "Benchmarks, not tests: nothing fails on a time.</p>")
+        body.append("".join(f"<img src='{run_figure(f, '', out, f['name'])}' width='560'>" for f in b["figures"]))
+        body.append("<table><tr><th>stage</th><th>N</th><th>threads</th><th>seconds</th><th>particle updates/s</th>"
+                    "<th>pair interactions/s</th></tr>")
+        for r in b["rows"]:
+            body.append(f"<tr><td>{html.escape(r['stage'])}</td><td>{r['n']}</td><td>{r['threads']}</td><td>{fmt(r['seconds'], '.4g')}</td>"
+                        f"<td>{fmt(r['particle_updates_per_s'])}</td><td>{fmt(r['pairs_per_s'])}</td></tr>")
+        body.append("</table><p>Fitted cost slopes (time ~ N^slope): " +
+                    ", ".join(f"{html.escape(k)} {fmt(v, '.2f')}" for k, v in b["fitted_slopes"].items()) +
+                    ". Bytes per particle: " + ", ".join(f"N={k}: {v:.0f}" for k, v in b["bytes_per_particle"].items()) + ".</p>")
+
     summary = ["<table><tr><th>case</th><th>variant</th><th>gates</th><th>run verdicts</th><th>sweep wall s</th></tr>"]
     for case, variant, passed, verdicts, wall in rows:
         summary.append(f"<tr><td><a href='#{case}'>{case}</a></td><td>{html.escape(variant)}</td>"
                        f"<td class='{'pass' if passed else 'fail'}'>{'pass' if passed else 'FAIL'}</td>"
                        f"<td>{html.escape(verdicts)}</td><td>{wall:.2f}</td></tr>")
     summary.append("</table>")
-    prov = next(iter(sweeps.values()))[0]["runs"][0].get("provenance", {})
+    prov = next(iter(sweeps.values()))[0]["runs"][0].get("provenance", {}) if sweeps else {}
     prov_html = ", ".join(f"{k}: {html.escape(str(v))}" for k, v in prov.items())
     page = f"""<!doctype html><html><head><meta charset='utf-8'><title>sphv report: {a.name}</title>
 <style>body{{font-family:sans-serif;max-width:1500px;margin:auto}} table{{border-collapse:collapse;margin:8px 0}}
@@ -285,7 +303,7 @@ td,th{{border:1px solid #ccc;padding:2px 6px;font-size:13px}} .pass{{color:#070}
            *tex_rows, r"\hline", r"\end{tabular}", ""]
     (out / "tables.tex").write_text("\n".join(tex))
     print(f"report: {out / 'index.html'} ({len(sweeps)} cases)")
-    if a.bundle:
+    if a.bundle and sweeps:
         write_bundle(a.bundle, sweeps, out, "\n".join(tex))
         print(f"bundle: {a.bundle / 'verification.tex'}")
 

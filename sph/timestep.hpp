@@ -16,13 +16,16 @@ struct TimeStepControl {
   TimeStepCriterion criterion = TimeStepCriterion::courant;
   double C = 0.3;        // Courant number (Monaghan 1992, Phantom C_cour)
   double C_force = 0.25; // acceleration criterion (Phantom C_force)
+  double C_energy = 0.25; // cooling criterion: u_i may fall by at most this fraction per step
   double eta = 0.3;      // (43)
 };
 
 // Monaghan (1992) signal-speed Courant condition and the acceleration criterion, with
 // Monaghan's smoothing length h_i / 2 (this chapter's h is the full support radius):
 //   dt = min_i min(C (h_i/2) / (c_i + |v_i| + 1.2 (alpha c_i + beta max_j |mu_ij|)),
-//                  C_force sqrt((h_i/2) / |a_i|)).
+//                  C_force sqrt((h_i/2) / |a_i|), C_energy u_i / |du_i/dt| where du_i/dt < 0).
+// The last keeps u positive where a cold particle borders a much hotter one (Toro 3, 4: the
+// symmetric energy forms cool it at a rate set by the hot neighbour's pressure).
 // mu_max may be empty (no artificial viscosity).
 template <int D>
 double courant_time_step(const Particles<D>& p, const Derivatives<D>& d, const std::vector<double>& mu_max,
@@ -34,6 +37,7 @@ double courant_time_step(const Particles<D>& p, const Derivatives<D>& d, const s
     if (signal > 0.0) dt = std::min(dt, c.C * hm / signal);
     const double a = d.dvdt[i].norm();
     if (a > 0.0) dt = std::min(dt, c.C_force * std::sqrt(hm / a));
+    if (d.dudt[i] < 0.0 && c.C_energy > 0.0) dt = std::min(dt, c.C_energy * p.u[i] / -d.dudt[i]);
   }
   return dt;
 }

@@ -11,6 +11,8 @@
 
 #include "verification/case.hpp"
 #include "verification/baseline.hpp"
+#include "verification/bench.hpp"
+#include "verification/gravity_command.hpp"
 #include "verification/mpi.hpp"
 #include "verification/sweep.hpp"
 
@@ -165,6 +167,8 @@ int run_main(int argc, char** argv) {
   auto* baseline_up = baseline->add_subcommand("update", "rewrite reference/baselines/ from gate-level sweeps");
   baseline->require_subcommand(1);
   baseline_up->add_option("--cases", only, "only these cases")->delimiter(',');
+  add_gravity_command(app);
+  add_bench_command(app);
 
   try {
     app.parse(argc, argv);

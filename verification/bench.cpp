@@ -1,0 +1,173 @@
+#include "verification/bench.hpp"
+
+#include <omp.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <functional>
+#include <map>
+
+#include "reference/direct_sum.hpp"
+#include "sph/density.hpp"
+#include "sph/gravity_tree.hpp"
+#include "sph/grid_search.hpp"
+#include "sph/lattice.hpp"
+#include "sph/tree.hpp"
+#include "verification/bench_hydro.hpp"
+#include "verification/params.hpp"
+#include "verification/result.hpp"
+#include "verification/sweep.hpp"
+
+namespace sphv {
+namespace {
+
+struct BenchOptions {
+  std::vector<long> sizes = {10000, 100000, 1000000};
+  std::vector<int> threads;
+  long tree_max = 250000, direct_max = 20000;
+  std::filesystem::path out = "runs/bench";
+};
+
+struct Row {
+  std::string stage;
+  long n;
+  int threads;
+  double seconds;
+  double pairs;  // pair interactions (particle-particle and particle-node for the tree)
+};
+
+// Best of a few repetitions (one for runs over a second): the machine's noise only adds time.
+double best_time(const std::function<void()>& f) {
+  double best = 1e300, total = 0.0;
+  for (int k = 0; k < 5 && total < 1.0; ++k) {
+    const auto t0 = std::chrono::steady_clock::now();
+    f();
+    const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    best = std::min(best, t);
+    total += t;
+  }
+  return best;
+}
+
+// 3D uniform gas: a lattice jittered by 0.1 dx, support radius 2.4 dx (about 60 neighbours).
+sph::Particles<3> uniform_gas(long n, sph::Box<3>& box) {
+  const int side = static_cast<int>(std::lround(std::cbrt(static_cast<double>(n))));
+  box = sph::unit_box<3>(true);
+  return sph::lattice<3>(side, box, 1.0, 2.4, 0.1, 7);
+}
+
+std::vector<Row> measure(long n_wanted, int threads, const BenchOptions& o, double& bytes_per_particle) {
+  omp_set_num_threads(threads);
+  std::vector<Row> rows;
+  sph::Box<3> box;
+  sph::Particles<3> p = uniform_gas(n_wanted, box);
+  const long n = static_cast<long>(p.size());
+  sph::NeighbourList nl;
+  rows.push_back({"neighbour search", n, threads, best_time([&] { nl = sph::grid_search<3>(p.x, p.h, box); }),
+                  static_cast<double>(nl.pairs())});
+  rows.push_back({"density (27)", n, threads, best_time([&] { sph::density_summation<3>(p, nl, box); }),
+                  static_cast<double>(nl.pairs())});
+  const HydroTimes hydro = time_hydro_step(p, box, best_time);
+  rows.push_back({"hydro forces", n, threads, hydro.forces, hydro.pairs});
+  rows.push_back({"full hydro step", n, threads, hydro.step, hydro.pairs});
+  bytes_per_particle = hydro.bytes_per_particle;
+  if (n <= o.tree_max) {
+    sph::Tree<3> tree;
+    rows.push_back({"tree build", n, threads, best_time([&] { tree = sph::build_tree<3>(p.x, p.m); }), 0.0});
+    sph::GravityField g;
+    const sph::GravityOptions go{.theta = 0.5, .eps = 0.01};
+    const double t = best_time([&] { g = sph::tree_gravity(tree, p.x, p.m, go); });
+    double inter = 0.0;
+    for (long k : g.interactions) inter += static_cast<double>(k);
+    rows.push_back({"tree gravity (quadrupole, theta 0.5)", n, threads, t, inter});
+  }
+  if (n <= o.direct_max) {
+    std::vector<double> x(n), y(n), z(n);
+    for (long i = 0; i < n; ++i) x[i] = p.x[i][0], y[i] = p.x[i][1], z[i] = p.x[i][2];
+    rows.push_back({"direct-sum gravity", n, threads,
+                    best_time([&] { reference::direct_sum(x, y, z, p.m, 1.0, 0.01); }), double(n) * double(n - 1)});
+  }
+  return rows;
+}
+
+void bench(const BenchOptions& o) {
+  std::vector<Row> rows;
+  std::map<long, double> bytes;
+  std::printf("%-38s %9s %7s %10s %14s %14s\n", "stage", "N", "threads", "seconds", "updates/s", "pairs/s");
+  for (int threads : o.threads)
+    for (long n : o.sizes) {
+      double b = 0.0;
+      for (const Row& r : measure(n, threads, o, b)) {
+        rows.push_back(r);
+        std::printf("%-38s %9ld %7d %10.4f %14.3e %14.3e\n", r.stage.c_str(), r.n, r.threads, r.seconds,
+                    r.n / r.seconds, r.pairs / r.seconds);
+        std::fflush(stdout);
+      }
+      bytes[rows.back().n] = b;
+    }
+
+  // Cost against N with fitted slopes (GSL least squares on log-log), at the most threads.
+  const int tmax = *std::max_element(o.threads.begin(), o.threads.end());
+  std::map<std::string, Series> cost;
+  for (const Row& r : rows)
+    if (r.threads == tmax) {
+      cost[r.stage].x.push_back(r.n);
+      cost[r.stage].y.push_back(r.seconds);
+    }
+  Figure fig{"bench_cost", "Cost against N, 3D uniform gas (" + std::to_string(tmax) + " threads)", "particles N",
+             "wall time [s]", "log", "log", {}};
+  nlohmann::json slopes = nlohmann::json::object();
+  for (auto& [stage, s] : cost) {
+    const double slope = s.x.size() >= 2 ? -observed_order(s.x, s.y) : NAN;
+    slopes[stage] = std::isfinite(slope) ? nlohmann::json(slope) : nlohmann::json();
+    char label[160];
+    std::snprintf(label, sizeof label, "%s: slope %.2f", stage.c_str(), slope);
+    s.label = label;
+    s.style = "line";
+    fig.series.push_back(s);
+  }
+  Figure upd{"bench_updates", "Full hydro step throughput", "particles N", "particle updates per second", "log", "log", {}};
+  for (int t : o.threads) {
+    Series s{std::to_string(t) + " thread(s)", {}, {}, "line"};
+    for (const Row& r : rows)
+      if (r.threads == t && r.stage == "full hydro step") s.x.push_back(r.n), s.y.push_back(r.n / r.seconds);
+    upd.series.push_back(s);
+  }
+  nlohmann::json jr = nlohmann::json::array(), jb = nlohmann::json::object();
+  for (const Row& r : rows)
+    jr.push_back({{"stage", r.stage}, {"n", r.n}, {"threads", r.threads}, {"seconds", r.seconds},
+                  {"pairs", r.pairs}, {"particle_updates_per_s", r.n / r.seconds}, {"pairs_per_s", r.pairs / r.seconds}});
+  for (const auto& [n, b] : bytes) jb[std::to_string(n)] = b;
+  const nlohmann::json j = {{"benchmark", "3D uniform gas, lattice jittered 0.1 dx, h = 2.4 dx"},
+                            {"rows", jr}, {"fitted_slopes", slopes}, {"bytes_per_particle", jb},
+                            {"figures", {to_json(fig), to_json(upd)}}, {"provenance", provenance()}};
+  write_atomically(o.out / "bench.json", j.dump(1) + "\n");
+  std::printf("fitted cost slopes (time ~ N^slope):");
+  for (const auto& [k, v] : slopes.items()) std::printf(" %s %.2f;", k.c_str(), v.is_number() ? v.get<double>() : NAN);
+  std::printf("\nbytes per particle (hydro state + neighbour list):");
+  for (const auto& [n, b] : bytes) std::printf(" N=%ld: %.0f", n, b);
+  std::printf("\nwritten %s\n", (o.out / "bench.json").string().c_str());
+}
+
+}  // namespace
+
+void add_bench_command(CLI::App& app) {
+  auto o = std::make_shared<BenchOptions>();
+  auto* cmd = app.add_subcommand("bench", "throughput of search, density, hydro step, tree and direct sum");
+  cmd->add_option("--sizes", o->sizes, "particle numbers (rounded to cubes)")->delimiter(',')->check(CLI::PositiveNumber);
+  cmd->add_option("--threads", o->threads, "thread counts (default: 1 and all cores)")->delimiter(',')->check(CLI::PositiveNumber);
+  cmd->add_option("--tree-max", o->tree_max, "largest N for the tree");
+  cmd->add_option("--direct-max", o->direct_max, "largest N for the O(N^2) direct sum");
+  cmd->add_option("--out", o->out, "output directory (bench.json)");
+  cmd->callback([o] {
+    if (o->threads.empty()) {
+      o->threads = {1};
+      if (omp_get_num_procs() > 1) o->threads.push_back(omp_get_num_procs());
+    }
+    bench(*o);
+  });
+}
+
+}  // namespace sphv

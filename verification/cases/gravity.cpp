@@ -1,0 +1,210 @@
+// Case `gravity`: Barnes-Hut tree forces (9.4.7, monopole and quadrupole (79)-(89)) against the
+// O(N^2) direct sum, as a function of the opening angle theta; cost against N.
+#include <chrono>
+#include <cmath>
+#include <string>
+
+#include "sph/gravity_tree.hpp"
+#include "verification/case.hpp"
+#include "verification/cases/gravity_compare.hpp"
+#include "verification/cases/gravity_models.hpp"
+#include "verification/sweep.hpp"
+
+namespace sphv {
+namespace {
+
+using namespace gravity;
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+// Best of up to 5 repetitions (fewer once 0.5 s are spent): short runs on a shared machine are
+// dominated by thread start-up and by other processes.
+template <class F>
+double best_time(F&& f) {
+  double best = INFINITY, total = 0.0;
+  for (int k = 0; k < 5 && total < 0.5; ++k) {
+    const auto t0 = Clock::now();
+    f();
+    const double dt = seconds_since(t0);
+    best = std::min(best, dt), total += dt;
+  }
+  return best;
+}
+
+const std::vector<double> thetas = {0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1.0};
+
+std::string key(const char* what, sph::Multipole m, double theta) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%s_%s_%.1f", what, m == sph::Multipole::monopole ? "mono" : "quad", theta);
+  return buf;
+}
+
+// Least-squares slope of log y on log x.
+double loglog_slope(const std::vector<double>& x, const std::vector<double>& y) {
+  std::vector<double> nx, ny;
+  for (std::size_t k = 0; k < x.size(); ++k) nx.push_back(1.0 / x[k]), ny.push_back(y[k]);
+  return observed_order(nx, ny);  // fits y ~ n^-p with n = 1/theta: p is the slope in theta
+}
+
+Result run(const Params& p) {
+  const long n = p.integer("n");
+  const double eps = p.real("eps");
+  const auto opening = p.text("opening") == "plain" ? sph::Opening::plain : sph::Opening::robust;
+  const auto set = make_model(p.text("model"), n, 12345);
+  Result r;
+  r.n_particles = set.x.size();
+
+  auto t0 = Clock::now();
+  const auto ref = direct(set.x, set.m, eps);
+  const double direct_time = seconds_since(t0);
+  const double w_direct = potential_energy(set.m, ref.phi);
+  t0 = Clock::now();
+  const auto tree = sph::build_tree<3>(set.x, set.m);
+  const double build_time = seconds_since(t0);
+
+  double quad_half_walk_time = NAN;  // quadrupole walk at theta = 0.5, reused in the cost scan
+  nlohmann::json table = nlohmann::json::array();
+  std::vector<Figure> figs(3);
+  figs[0] = {"force_error_theta", "Tree force error against opening angle (" + p.text("model") + ", N = " +
+                 std::to_string(n) + ")", "opening angle theta", "relative force error |a_tree - a_direct| / |a_direct|",
+             "log", "log", {}};
+  figs[1] = {"energy_error_theta", "Potential energy error against opening angle", "opening angle theta",
+             "|W_tree - W_direct| / |W_direct|", "log", "log", {}};
+  figs[2] = {"error_time", "Accuracy against cost (tree walk; build " + std::to_string(build_time) + " s, direct sum " +
+                 std::to_string(direct_time) + " s)",
+             "wall time of the force evaluation [s]", "99th percentile relative force error", "log", "log", {}};
+  for (const auto m : {sph::Multipole::monopole, sph::Multipole::quadrupole}) {
+    const std::string label = m == sph::Multipole::monopole ? "monopole" : "quadrupole";
+    Series med{label + " median", {}, {}, "line"}, p90{label + " 90th pct", {}, {}, "dashed"},
+        p99{label + " 99th pct", {}, {}, "line"}, mx{label + " max", {}, {}, "points"},
+        en{label, {}, {}, "line"}, cost{label, {}, {}, "line"};
+    for (double theta : thetas) {
+      t0 = Clock::now();
+      const auto f = sph::tree_gravity(tree, set.x, set.m, {.theta = theta, .eps = eps, .multipole = m, .opening = opening});
+      const double walk_time = seconds_since(t0);
+      const auto pc = percentiles(relative_force_error(f, ref));
+      const double w_err = std::abs(potential_energy(set.m, f.phi) - w_direct) / std::abs(w_direct);
+      double inter = 0.0;
+      for (long c : f.interactions) inter += c;
+      inter /= n;
+      for (auto [s, v] : {std::pair{&med, pc.p50}, {&p90, pc.p90}, {&p99, pc.p99}, {&mx, pc.max}, {&en, w_err}})
+        s->x.push_back(theta), s->y.push_back(v);
+      cost.x.push_back(walk_time), cost.y.push_back(pc.p99);
+      if (m == sph::Multipole::quadrupole && theta == 0.5) quad_half_walk_time = walk_time;
+      table.push_back({{"multipole", label}, {"theta", theta}, {"p50", pc.p50}, {"p90", pc.p90}, {"p99", pc.p99},
+                       {"max", pc.max}, {"energy", w_err}, {"interactions_per_particle", inter},
+                       {"walk_time_s", walk_time}});
+      if (theta == 0.2 || theta == 0.5 || theta == 0.8) {
+        r.errors[key("p99", m, theta)] = pc.p99;
+        r.errors[key("max", m, theta)] = pc.max;
+        r.errors[key("energy", m, theta)] = w_err;
+      }
+    }
+    r.extra["theta_slope_median_" + label] = loglog_slope(med.x, med.y);
+    r.extra["theta_slope_p99_" + label] = loglog_slope(p99.x, p99.y);
+    for (auto* s : {&med, &p90, &p99, &mx}) figs[0].series.push_back(*s);
+    figs[1].series.push_back(en);
+    figs[2].series.push_back(cost);
+  }
+
+  // Cost against N: the same model at N/64, N/16, N/4 and N; tree = build + quadrupole walk at
+  // theta = 0.5.
+  Figure inter{"interactions_N", "Interactions per particle against N (quadrupole, theta = 0.5)",
+               "number of particles N", "interactions per particle", "log", "log", {}};
+  Figure wall{"time_N", "Wall time against N (quadrupole, theta = 0.5; " + p.text("model") + ")",
+              "number of particles N", "wall time [s]", "log", "log", {}};
+  Series it{"tree", {}, {}, "line"}, id{"direct sum (N - 1)", {}, {}, "dashed"};
+  Series tt{"tree (build + walk)", {}, {}, "line"}, td{"direct sum", {}, {}, "line"};
+  nlohmann::json cost = nlohmann::json::array();
+  double crossover = NAN;
+  for (long nk : {n / 64, n / 16, n / 4, n}) {
+    if (nk < 64) continue;
+    const auto s = nk == n ? set : make_model(p.text("model"), nk, 777);
+    sph::GravityField f;
+    const sph::GravityOptions o{.theta = 0.5, .eps = eps, .opening = opening};
+    // At N itself the timings above are reused (one direct sum at the largest N is enough).
+    const double td_k = nk == n ? direct_time : best_time([&] { direct(s.x, s.m, eps); });
+    const double tt_k = nk == n ? build_time + quad_half_walk_time : best_time([&] {
+      f = sph::tree_gravity(sph::build_tree<3>(s.x, s.m), s.x, s.m, o);
+    });
+    if (nk == n) f = sph::tree_gravity(tree, s.x, s.m, o);
+    double inter_k = 0.0;
+    for (long c : f.interactions) inter_k += c;
+    inter_k /= nk;
+    it.x.push_back(nk), it.y.push_back(inter_k), id.x.push_back(nk), id.y.push_back(nk - 1.0);
+    tt.x.push_back(nk), tt.y.push_back(tt_k), td.x.push_back(nk), td.y.push_back(td_k);
+    if (std::isnan(crossover) && tt_k < td_k) crossover = nk;
+    cost.push_back({{"N", nk}, {"tree_s", tt_k}, {"direct_s", td_k}, {"interactions_per_particle", inter_k}});
+  }
+  // Guides through the largest point: N log N and N^2.
+  Series gl{"~ N log N", {}, {}, "dashed"}, g2{"~ N^2", {}, {}, "dashed"};
+  for (double nk : tt.x) {
+    gl.x.push_back(nk), gl.y.push_back(tt.y.back() * nk * std::log(nk) / (tt.x.back() * std::log(tt.x.back())));
+    g2.x.push_back(nk), g2.y.push_back(td.y.back() * nk * nk / (td.x.back() * td.x.back()));
+  }
+  inter.series = {it, id};
+  wall.series = {tt, td, gl, g2};
+  figs.push_back(inter);
+  figs.push_back(wall);
+  r.figures = std::move(figs);
+  r.extra["theta_table"] = table;
+  r.extra["cost_against_N"] = cost;
+  r.extra["tree_beats_direct_from_N"] = std::isnan(crossover) ? nlohmann::json() : nlohmann::json(crossover);
+  r.extra["speedup_at_N"] = td.y.back() / tt.y.back();
+  r.extra["direct_time_s"] = direct_time;
+  r.extra["tree_build_time_s"] = build_time;
+  r.extra["softening_eps"] = eps;
+  return r;
+}
+
+std::vector<Check> gates(const Sweep& s) {
+  std::vector<Check> c;
+  const auto& r = s.runs.back();
+  const auto& e = r.errors;
+  const bool plummer = s.runs.back().params.value("model", "") == "plummer";
+  // SPH-EXA (ryoanji) test, reference-values.md: theta = 0.2 with quadrupoles: p99 < 3e-3,
+  // max < 3e-2, potential energy < 1e-2.
+  c.push_back({"p99_quad_0.2", e.at("p99_quad_0.2"), 0.0, 3e-3, "SPH-EXA: theta 0.2 quadrupole p99 < 3e-3"});
+  c.push_back({"max_quad_0.2", e.at("max_quad_0.2"), 0.0, 3e-2, "SPH-EXA: theta 0.2 quadrupole max < 3e-2"});
+  c.push_back({"energy_quad_0.5", e.at("energy_quad_0.5"), 0.0, 1e-2, "SPH-EXA: potential energy < 1e-2"});
+  // The gate on the Plummer sphere: quadrupole theta = 0.5, p99 below Phantom's tolerance
+  // for the maximum error at theta 0.5 (6e-3, measured there 2.8e-3; reference-values.md).
+  if (plummer)
+    c.push_back({"p99_quad_0.5", e.at("p99_quad_0.5"), 0.0, 6e-3, "Phantom: theta 0.5 max error tolerance 6e-3"});
+  // Rate in theta: each accepted node's relative error is O((d/r)^(p+1)) with p the order kept
+  // ((81): monopole p = 1 since the dipole (86) vanishes, so ~theta^2; quadrupole ~theta^3-4,
+  // reference-values.md). Lower bounds: that leading rate less 0.3 for the fit. At finite N the
+  // curve is steeper: as theta falls, more of the force comes from exact leaf interactions
+  // (clustered sets most: local slopes up to 3.5 and 5.8 at theta 0.2-0.3, N = 4096), so the upper
+  // bounds are the measured slopes over theta 0.2-1.0 (2.9 and 4.3) plus 0.6.
+  c.push_back({"theta_order_monopole", r.extra.at("theta_slope_median_monopole"), 1.7, 3.5,
+               "monopole ~ theta^2 or steeper"});
+  c.push_back({"theta_order_quadrupole", r.extra.at("theta_slope_median_quadrupole"), 2.7, 4.9,
+               "quadrupole ~ theta^3-4 or steeper"});
+  return c;
+}
+
+const Registration reg{Case{
+    .name = "gravity",
+    .summary = "Barnes-Hut tree gravity against direct summation: error vs theta, cost vs N",
+    .n_counts = "number of particles N",
+    .tags = {"gate", "sweep"},
+    .params = {integer_param("n", 20000, "number of particles", 63.0),
+               choice_param("model", "plummer", "particle set", {"uniform", "plummer", "clustered"}),
+               real_param("eps", 0.01, "Plummer softening length (tree and direct sum)", std::nullopt),
+               choice_param("opening", "robust", "opening criterion", {"robust", "plain"})},
+    .levels = {5000, 20000},  // 80000 takes ~5 min (direct sum 47 s, theta 0.2 walks 70-90 s)
+    .gate_levels = {4096},
+    .expected_order = [](const Params&) { return std::map<std::string, double>{}; },
+    .expected_why = "the tree error at fixed theta does not converge with N (no order in n); the order in "
+                    "theta is fitted inside each run (monopole ~theta^2, quadrupole ~theta^3-4)",
+    .variants = {{}, {"model=uniform"}, {"model=clustered"}},
+    .validate = [](const Params& p) {
+      if (!(p.real("eps") >= 0.0)) throw InputError("parameter eps must be >= 0");
+    },
+    .run = run,
+    .gates = gates,
+}};
+
+}  // namespace
+}  // namespace sphv

@@ -1,0 +1,161 @@
+// Unit tests and gates of the gravity area: tree build, tree neighbour search against the grid
+// search, tree gravity against the direct sum, the point-mass scene term.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <random>
+
+#include "sph/grid_search.hpp"
+#include "sph/gravity_point_mass.hpp"
+#include "sph/gravity_tree.hpp"
+#include "sph/tree.hpp"
+#include "sph/tree_search.hpp"
+#include "verification/cases/gravity_compare.hpp"
+#include "verification/cases/gravity_models.hpp"
+#include "verification/sweep.hpp"
+
+using namespace sphv::gravity;
+using V3 = sph::Vec<3>;
+
+TEST_CASE("tree: every particle in one leaf, moments add up", "[gravity][tree]") {
+  const auto s = clustered(3000, 7);
+  const auto t = sph::build_tree<3>(s.x, s.m);
+  std::vector<int> seen(s.x.size(), 0);
+  for (const auto& nd : t.nodes)
+    if (nd.leaf()) {
+      CHECK(nd.end - nd.begin == 1);  // leaf_size 1: the leaves are the particles (9.4.3)
+      for (int q = nd.begin; q < nd.end; ++q) ++seen[t.order[q]];
+    }
+  for (int c : seen) REQUIRE(c == 1);
+  // Root moments against a plain sum.
+  V3 com = V3::Zero();
+  for (std::size_t i = 0; i < s.x.size(); ++i) com += s.m[i] * s.x[i];
+  Eigen::Matrix3d S = Eigen::Matrix3d::Zero();
+  for (std::size_t i = 0; i < s.x.size(); ++i) S += s.m[i] * (s.x[i] - com) * (s.x[i] - com).transpose();
+  CHECK(t.nodes[0].mass == Approx(1.0).epsilon(1e-13));
+  CHECK((t.nodes[0].com - com).norm() < 1e-13);
+  CHECK((t.nodes[0].S - S).norm() < 1e-12 * S.norm());
+}
+
+TEST_CASE("tree: coincident particles end in one leaf at max depth", "[gravity][tree]") {
+  std::vector<V3> x(5, V3(0.3, 0.3, 0.3));
+  x.push_back(V3(1, 1, 1));
+  const auto t = sph::build_tree<3>(x, std::vector<double>(6, 1.0));
+  int leaves = 0;
+  for (const auto& nd : t.nodes) leaves += nd.leaf();
+  CHECK(leaves == 2);
+}
+
+// The gate of the issue: tree walk and linked-cell grid give identical neighbour sets (open
+// boundaries), on a uniform set with one h and on a clustered set with variable h.
+TEST_CASE("gate: tree search returns the grid search neighbour sets", "[gate][gravity][tree]") {
+  for (const bool clumpy : {false, true}) {
+    const auto s = clumpy ? clustered(4000, 3) : uniform_sphere(4000, 3);
+    std::vector<double> h(s.x.size(), 0.2);
+    std::mt19937_64 rng(5);
+    std::uniform_real_distribution<double> f(0.2, 1.5);
+    if (clumpy)
+      for (auto& hi : h) hi = 0.05 * f(rng);
+    const auto t = sph::build_tree<3>(s.x, s.m);
+    const auto a = sph::tree_search<3>(t, s.x, h);
+    const auto b = sph::grid_search<3>(s.x, h, sph::unit_box<3>(false));
+    REQUIRE(a.offset == b.offset);
+    std::size_t mismatched = 0;
+    for (std::size_t i = 0; i < s.x.size(); ++i) {
+      std::vector<int> la(a.of(i).begin(), a.of(i).end()), lb(b.of(i).begin(), b.of(i).end());
+      std::sort(la.begin(), la.end());
+      std::sort(lb.begin(), lb.end());
+      mismatched += la != lb;
+    }
+    CHECK(mismatched == 0);
+    CHECK(a.pairs() > 10 * s.x.size());  // the sets are not trivially small
+  }
+}
+
+// The quadrupole force must be minus the gradient of the quadrupole potential (softened and not):
+// central differences of phi, step 1e-4 (truncation ~1e-8 relative).
+TEST_CASE("gravity: quadrupole force is -grad phi", "[gravity]") {
+  const auto s = plummer_sphere(500, 11, 0.3, 2.0);
+  const auto t = sph::build_tree<3>(s.x, s.m);
+  for (double eps : {0.0, 0.05}) {
+    const sph::GravityOptions o{.theta = 1e9, .eps = eps, .multipole = sph::Multipole::quadrupole,
+                                .opening = sph::Opening::plain};  // root node only
+    const std::vector<V3> p{V3(2.5, -1.0, 3.0)};
+    const auto f = sph::tree_gravity_at(t, s.x, s.m, o, p);
+    REQUIRE(f.interactions[0] == 1);
+    const double d = 1e-4;
+    for (int k = 0; k < 3; ++k) {
+      std::vector<V3> pp{p[0], p[0]};
+      pp[0][k] += d, pp[1][k] -= d;
+      const auto g = sph::tree_gravity_at(t, s.x, s.m, o, pp);
+      CHECK(f.a[0][k] == Approx(-(g.phi[0] - g.phi[1]) / (2 * d)).epsilon(1e-7));
+    }
+  }
+}
+
+// With every node opened the tree is a direct sum in another order: agreement to round-off.
+TEST_CASE("gravity: tree with theta -> 0 equals the direct sum", "[gravity]") {
+  const auto s = uniform_sphere(800, 2);
+  const auto t = sph::build_tree<3>(s.x, s.m);
+  const auto f = sph::tree_gravity(t, s.x, s.m, {.theta = 1e-6, .eps = 0.01});
+  const auto d = direct(s.x, s.m, 0.01);
+  const auto p = percentiles(relative_force_error(f, d));
+  CHECK(p.max < 1e-12);
+  for (std::size_t i = 0; i < s.x.size(); ++i) REQUIRE(f.phi[i] == Approx(d.phi[i]).epsilon(1e-12));
+}
+
+TEST_CASE("gravity: point-mass term adds (76)-(77) to dv/dt", "[gravity]") {
+  sph::Particles<3> p;
+  p.resize(2);
+  p.x[0] = V3(1, 0, 0);
+  p.x[1] = V3(0, 0.1, 0);
+  sph::Scene<3, sph::PointMassGravity<3>> scene;
+  scene.term<sph::PointMassGravity<3>>().GM = 2.0;
+  scene.term<sph::PointMassGravity<3>>().eps = 0.1;
+  sph::NeighbourList nl;
+  nl.offset.assign(3, 0);
+  const auto box = sph::unit_box<3>(false);
+  sph::Derivatives<3> d;
+  scene.derivatives(p, {nl, box}, d);
+  CHECK(d.dvdt[0][0] == Approx(-2.0 / std::pow(1.01, 1.5)));
+  CHECK(d.dvdt[1][1] == Approx(-2.0 * 0.1 / std::pow(0.02, 1.5)));
+}
+
+TEST_CASE("gate: gravity", "[gate][gravity]") {
+  const auto& c = sphv::find_case("gravity");
+  for (const auto& settings : c.variants) {
+    const auto s = sphv::run_sweep(c, c.gate_levels, settings);
+    for (const auto& ch : s.checks) {
+      INFO(s.variant() << ": " << ch.name << " = " << ch.value << " in [" << ch.lo << ", " << ch.hi << "]: " << ch.why);
+      CHECK(ch.pass());
+    }
+  }
+}
+
+TEST_CASE("gate: gravity_sw", "[gate][gravity]") {
+  const auto& c = sphv::find_case("gravity_sw");
+  const auto s = sphv::run_sweep(c, c.gate_levels, {});
+  for (const auto& ch : s.checks) {
+    INFO(ch.name << " = " << ch.value << " in [" << ch.lo << ", " << ch.hi << "]: " << ch.why);
+    CHECK(ch.pass());
+  }
+}
+
+TEST_CASE("gate: kepler", "[gate][gravity]") {
+  const auto& c = sphv::find_case("kepler");
+  const auto s = sphv::run_sweep(c, c.gate_levels, {});
+  for (const auto& ch : s.checks) {
+    INFO(ch.name << " = " << ch.value << " in [" << ch.lo << ", " << ch.hi << "]: " << ch.why);
+    CHECK(ch.pass());
+  }
+}
+
+TEST_CASE("gate: gravity_analytic", "[gate][gravity]") {
+  const auto& c = sphv::find_case("gravity_analytic");
+  for (const auto& settings : c.variants) {
+    const auto s = sphv::run_sweep(c, c.gate_levels, settings);
+    for (const auto& ch : s.checks) {
+      INFO(s.variant() << ": " << ch.name << " = " << ch.value << " in [" << ch.lo << ", " << ch.hi << "]: " << ch.why);
+      CHECK(ch.pass());
+    }
+  }
+}
