@@ -1,0 +1,143 @@
+// Case `extreme_degenerate`: degenerate inputs that must end with a verdict, never a crash or a
+// NaN. kind = isolated: one particle with no neighbour; its density is the self-density (49)
+// m W(0, h) with h at the cap h_max (sph/smoothing_length.hpp), and it must stay at rest.
+// kind = coincident: a periodic 2D lattice at rest with one particle duplicated on top of
+// another (r_ij = 0, grad W = 0). kind = contrast: a 1D periodic gas at rest in pressure
+// equilibrium whose density jumps by `contrast` (masses, same spacing); the exact solution is
+// rest and uniform pressure, the error is the spurious motion and pressure blip at the contacts.
+#include <cmath>
+
+#include "verification/case.hpp"
+#include "verification/cases/extreme_hydro.hpp"
+#include "verification/sweep.hpp"
+
+namespace sphv {
+namespace {
+
+double max_speed(const auto& p) {
+  double v = 0.0;
+  for (const auto& vi : p.v) v = std::max(v, vi.norm());
+  return v;
+}
+
+Result isolated(const Params& prm, extreme::Method m) {
+  sph::Box<2> box = sph::unit_box<2>(false);
+  sph::Particles<2> p;
+  p.resize(1);
+  p.x[0] = sph::Vec<2>::Constant(0.5);
+  p.m[0] = 1e-3;
+  p.rho[0] = 1.0;
+  p.u[0] = 1.0;
+  p.h[0] = 0.05;
+  m.h_max = 0.4;
+  m.controls.t_end = 0.1;
+  const auto out = extreme::evolve_gas(p, box, m);
+  Result r;
+  r.n_particles = 1;
+  r.verdict = out.verdict == "ok" ? "stable" : out.verdict;
+  const double self = p.m[0] * sph::CubicSpline<2>::W(0.0, m.h_max);  // (49)
+  r.errors = {{"self_density", std::abs(p.rho[0] - self) / self}, {"speed", max_speed(p)}};
+  r.extra = {{"h", p.h[0]}, {"rho", p.rho[0]}, {"rho_self_49", self}, {"steps", out.steps}};
+  (void)prm;
+  return r;
+}
+
+Result coincident(const Params& prm, extreme::Method m) {
+  const int n = static_cast<int>(prm.integer("n"));
+  sph::Box<2> box = sph::unit_box<2>(true);
+  sph::Particles<2> p = sph::lattice<2>(n, box, 1.0, m.hfact);
+  for (auto& u : p.u) u = 1.0;
+  const std::size_t k = p.size() / 2 + n / 2;
+  p.x.push_back(p.x[k]), p.v.push_back(p.v[k]), p.m.push_back(p.m[k]), p.rho.push_back(p.rho[k]);
+  p.p.push_back(0.0), p.c.push_back(0.0), p.u.push_back(p.u[k]), p.h.push_back(p.h[k]);
+  m.h_max = 0.45;
+  m.controls.t_end = prm.real("t_end");
+  const auto out = extreme::evolve_gas(p, box, m);
+  Result r;
+  r.n_particles = p.size();
+  r.verdict = out.verdict == "ok" ? "stable" : out.verdict;
+  // The pair feels no force from each other and identical forces from the rest: it never
+  // separates (an SPH degeneracy the verdict alone does not reveal).
+  r.extra = {{"pair_separation", (p.x[k] - p.x.back()).norm()}, {"max_speed", max_speed(p)}, {"steps", out.steps},
+             {"rho_pair", p.rho[k]}};
+  return r;
+}
+
+Result contrast(const Params& prm, extreme::Method m) {
+  const int n = static_cast<int>(prm.integer("n"));
+  const double R = prm.real("contrast");
+  sph::Box<1> box = sph::unit_box<1>(true);
+  sph::Particles<1> p = sph::lattice<1>(n, box, 1.0, m.hfact);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const bool light = p.x[i][0] >= 0.25 && p.x[i][0] < 0.75;
+    p.m[i] /= light ? R : 1.0;
+    p.u[i] = 1.0 / ((m.gamma - 1.0) * (light ? 1.0 / R : 1.0));  // p = 1 everywhere
+  }
+  m.h_max = 0.45;
+  m.controls.t_end = prm.real("t_end");
+  const auto out = extreme::evolve_gas(p, box, m);
+  Result r;
+  r.n_particles = p.size();
+  r.verdict = out.verdict == "ok" ? "stable" : out.verdict;
+  r.extra = {{"steps", out.steps}, {"t_reached", out.t}};
+  if (out.verdict != "ok") return r;
+  double dp = 0.0;
+  for (double pi : p.p) dp = std::max(dp, std::abs(pi - 1.0));
+  const double c_dense = std::sqrt(m.gamma);  // p = rho = 1
+  r.errors = {{"speed_over_c_dense", max_speed(p) / c_dense}, {"pressure_blip", dp}};
+  Series pts{"SPH particles", {}, {}, "points"}, ex{"exact (rest, p = 1)", {0.0, 1.0}, {1.0, 1.0}, "line"};
+  for (std::size_t i = 0; i < p.size(); ++i) pts.x.push_back(p.x[i][0]), pts.y.push_back(p.p[i]);
+  r.figures.push_back({"pressure", "Contact at rest, density contrast " + std::to_string(R), "x", "pressure p",
+                       "linear", "linear", {pts, ex}});
+  return r;
+}
+
+Result run(const Params& p) {
+  const extreme::Method m = extreme::method(p);
+  const std::string kind = p.text("kind");
+  if (kind == "isolated") return isolated(p, m);
+  if (kind == "coincident") return coincident(p, m);
+  return contrast(p, m);
+}
+
+std::vector<Check> gates(const Sweep& s) {
+  std::vector<Check> c;
+  const std::string kind = find_case(s.case_name).parse(s.settings).text("kind");
+  for (std::size_t k = 0; k < s.runs.size(); ++k) {
+    const auto& r = s.runs[k];
+    const std::string level = "n" + std::to_string(s.levels[k]) + "_" + kind;
+    // Every kind must end with a verdict; these three are expected to be stable.
+    c.push_back({level + "_stable", double(r.verdict == "stable"), 1.0, 1.0, "ends stable, no NaN"});
+    if (kind == "isolated" && r.verdict == "stable") {
+      c.push_back({level + "_self_density", r.errors.at("self_density"), 0.0, 1e-12, "(49): rho = m W(0, h_max), round-off"});
+      c.push_back({level + "_at_rest", r.errors.at("speed"), 0.0, 0.0, "no neighbour, no force"});
+    }
+  }
+  return c;
+}
+
+const Registration reg{Case{
+    .name = "extreme_degenerate",
+    .summary = "degenerate inputs: isolated particle (self-density), coincident particles, density contrast at rest",
+    .n_counts = "particles per side",
+    .tags = {"gate", "extreme"},
+    .params = [] {
+      std::vector<ParamSpec> ps = {integer_param("n", 16, "particles per side"),
+                                   choice_param("kind", "isolated", "degenerate input", {"isolated", "coincident", "contrast"}),
+                                   real_param("contrast", 1e3, "density ratio (kind = contrast)", 1.0),
+                                   real_param("t_end", 0.05, "end time", 0.0)};
+      for (auto& q : extreme::method_params(5.0 / 3.0, 2.4)) ps.push_back(q);
+      return ps;
+    }(),
+    .levels = {16, 32},
+    .gate_levels = {16},
+    .expected_order = {},
+    .expected_why = "verdicts, no convergence",
+    .variants = {{"kind=isolated"}, {"kind=coincident"}, {"kind=contrast", "t_end=0.005"}},
+    .validate = {},
+    .run = run,
+    .gates = gates,
+}};
+
+}  // namespace
+}  // namespace sphv

@@ -1,0 +1,179 @@
+// Case `noh`: Noh's implosion in 1D, 2D and 3D (planar, cylindrical, spherical). Cold gas
+// (gamma = 5/3, rho0 = 1, u ~ 0) falls at unit speed onto the centre; a shock leaves it at speed
+// 1/3 with density 4^d behind it and the gas at rest. Independent reference: reference/noh (the
+// exact solution). Wall heating (Noh 1987): every method overheats and underdensifies the gas
+// at the centre; it is measured, not gated, and the density gate looks away from it.
+#include <cmath>
+
+#include "reference/noh.hpp"
+#include "verification/case.hpp"
+#include "verification/cases/extreme_hydro.hpp"
+#include "verification/sweep.hpp"
+
+namespace sphv {
+namespace {
+
+template <int D>
+Result run_dim(const Params& prm) {
+  const int n = static_cast<int>(prm.integer("n"));
+  extreme::Method m = extreme::method(prm);
+  const double t_end = prm.real("t_end");
+  m.controls.t_end = t_end;
+  const reference::Noh exact(D, m.gamma);
+  const double dx = 1.0 / n, h0 = m.hfact * dx;
+  // Gas out to R0: at t_end the gas from R0 is at R0 - t_end, ahead of the shock at t_end / 3
+  // by a margin of three initial support radii (the cold free surface never reaches the shock).
+  const double R0 = 4.0 / 3.0 * t_end + 3.0 * h0;
+  const int k = static_cast<int>(std::ceil(R0 / dx));
+  sph::Box<D> box = sph::unit_box<D>(false);
+  box.lo = sph::Vec<D>::Constant(-(k + 1) * dx);
+  box.hi = sph::Vec<D>::Constant((k + 1) * dx);
+  sph::Particles<D> all = sph::lattice<D>(2 * k, sph::Box<D>{box.lo + sph::Vec<D>::Constant(dx), box.hi - sph::Vec<D>::Constant(dx), box.periodic}, 1.0, m.hfact);
+  sph::Particles<D> p;
+  for (std::size_t i = 0; i < all.size(); ++i)
+    if (all.x[i].norm() < R0) {
+      const double r = all.x[i].norm();
+      p.x.push_back(all.x[i]);
+      p.v.push_back(-all.x[i] / r);  // unit inflow
+      p.m.push_back(all.m[i]);
+      p.rho.push_back(1.0);
+      p.p.push_back(0.0);
+      p.c.push_back(0.0);
+      p.u.push_back(prm.real("u_cold"));
+      p.h.push_back(h0);
+    }
+  // The free surface's self-density floor (49): h at most 3 h0 (its density is never used).
+  m.h_max = 3.0 * h0;
+
+  const sph::HydroOutcome out = extreme::evolve_gas(p, box, m);
+  Result r;
+  r.n_particles = p.size();
+  r.verdict = out.verdict == "ok" ? "stable" : out.verdict;
+  const double rho_post = exact.post_shock_density(), Rs = exact.shock_radius(out.t);
+  r.extra = {{"steps", out.steps}, {"t_reached", out.t}, {"rho_post_exact", rho_post}, {"R0", R0},
+             {"shock_radius_exact", Rs}};
+  if (out.verdict != "ok") return r;
+
+  const std::vector<double> rad = extreme::radii(p);
+  // Post-shock density away from the wall-heated centre and from the smeared shock: the mean
+  // over particles with R_s / 4 < r < 3 R_s / 4.
+  double sum = 0.0, cnt = 0.0, rho_c = 0.0, u_c = 0.0, cnt_c = 0.0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (rad[i] > 0.25 * Rs && rad[i] < 0.75 * Rs) sum += p.rho[i], ++cnt;
+    if (rad[i] < 0.1 * Rs) rho_c += p.rho[i], u_c += p.u[i], ++cnt_c;
+  }
+  const double rho_mid = cnt > 0 ? sum / cnt : 0.0;
+  // Shock position: the radius where the binned density falls, going outwards, through the
+  // midpoint of the exact post-shock and pre-shock (4^(d-1) rho0 for gamma = 5/3) values.
+  const double pre = exact.at(Rs * 1.0001, out.t).rho, half = 0.5 * (rho_post + pre);
+  const extreme::Profile prof = extreme::radial_profile(rad, p.rho, 2.0 * Rs, 40);
+  double R_front = 0.0;
+  for (std::size_t b = 0; b + 1 < prof.r.size(); ++b)
+    if (prof.r[b] > 0.25 * Rs && prof.mean[b] >= half && prof.mean[b + 1] < half) {
+      R_front = prof.r[b] + (prof.r[b + 1] - prof.r[b]) * (prof.mean[b] - half) / (prof.mean[b] - prof.mean[b + 1]);
+      break;
+    }
+  r.errors = {{"rho_post", std::abs(rho_mid - rho_post) / rho_post},
+              {"shock_speed", std::abs(R_front / out.t - exact.shock_speed()) / exact.shock_speed()}};
+  r.functionals = {{"rho_post", rho_mid}, {"shock_speed", R_front / out.t}};
+  r.extra["rho_post_measured"] = rho_mid;
+  r.extra["shock_speed_measured"] = R_front / out.t;
+  r.extra["particles_in_window"] = cnt;
+  // Wall heating: density deficit and excess internal energy within R_s / 10 of the centre
+  // (exact: rho_post and u = u0^2 / 2).
+  r.extra["wall_rho_ratio"] = cnt_c > 0 ? rho_c / cnt_c / rho_post : 0.0;
+  r.extra["wall_u_ratio"] = cnt_c > 0 ? u_c / cnt_c / 0.5 : 0.0;
+  r.extra["wall_particles"] = cnt_c;
+
+  Series pts{"SPH particles", {}, {}, "points"}, line{"exact (Noh)", {}, {}, "line"};
+  const std::size_t stride = std::max<std::size_t>(1, p.size() / 4000);
+  for (std::size_t i = 0; i < p.size(); i += stride)
+    if (rad[i] < 3.0 * Rs) pts.x.push_back(rad[i]), pts.y.push_back(p.rho[i]);
+  for (int b = 1; b <= 600; ++b) {
+    const double rr = 3.0 * Rs * b / 600.0;
+    line.x.push_back(rr), line.y.push_back(exact.at(rr, out.t).rho);
+  }
+  r.figures.push_back({"profile_rho", "Noh " + std::to_string(D) + "D, n = " + std::to_string(n) + ": density at t = " +
+                                          std::to_string(out.t),
+                       "radius r", "density rho", "linear", "linear", {pts, line}});
+  Series up{"SPH particles", {}, {}, "points"}, ul{"exact (Noh)", {}, {}, "line"};
+  for (std::size_t i = 0; i < p.size(); i += stride)
+    if (rad[i] < 3.0 * Rs) up.x.push_back(rad[i]), up.y.push_back(p.u[i]);
+  ul.x = {0.0, Rs, Rs, 3.0 * Rs};
+  ul.y = {0.5, 0.5, 0.0, 0.0};
+  r.figures.push_back({"profile_u", "Noh " + std::to_string(D) + "D: specific internal energy (wall heating at r = 0)",
+                       "radius r", "u", "linear", "linear", {up, ul}});
+  r.particles = extreme::particle_table(p);
+  return r;
+}
+
+Result run(const Params& p) {
+  switch (p.integer("dim")) {
+    case 1: return run_dim<1>(p);
+    case 2: return run_dim<2>(p);
+    default: return run_dim<3>(p);
+  }
+}
+
+void validate(const Params& p) {
+  if (p.integer("dim") < 1 || p.integer("dim") > 3) throw InputError("noh: dim must be 1, 2 or 3");
+  if (!(p.real("t_end") > 0.0)) throw InputError("noh: t_end must be > 0");
+  if (!(p.real("u_cold") >= 0.0)) throw InputError("noh: u_cold must be >= 0");
+  if (p.real("hfact") * 12.0 > p.integer("n") * p.real("t_end"))
+    throw InputError("noh: resolution too coarse: need n t_end >= 12 hfact (a few h inside the shock)");
+}
+
+std::vector<Check> gates(const Sweep& s) {
+  std::vector<Check> c;
+  const Params prm = find_case(s.case_name).parse(s.settings);
+  const long d = prm.integer("dim");
+  // Measured post-shock density errors at the gate level: 1D n=200 1.3% (also 1.3% at n=400: the
+  // deficit is the entropy excess of the start-up collision, not resolution), 2D n=50 7.7%;
+  // tolerances about twice that. 3D is not gated (levels only).
+  const double tol_rho = d == 1 ? 0.03 : 0.15;
+  for (std::size_t k = 0; k < s.runs.size(); ++k) {
+    const auto& r = s.runs[k];
+    const std::string level = "n" + std::to_string(s.levels[k]);
+    c.push_back({level + "_stable", double(r.verdict == "stable"), 1.0, 1.0, "runs to t_end with a finite, positive state"});
+    if (r.verdict != "stable") continue;
+    c.push_back({level + "_rho_post", r.errors.at("rho_post"), 0.0, tol_rho,
+                 "post-shock density 4^d away from the wall (measured error, margin 2)"});
+    // Measured: the shock runs ahead by 4.2% (1D n=200), 5.4% (2D n=50): the wall-heated centre
+    // holds less mass, so the shock sits further out. Tolerance 10% (margin ~2).
+    c.push_back({level + "_shock_speed", r.errors.at("shock_speed"), 0.0, 0.1,
+                 "shock speed 1/3 within 10% (measured, margin 2)"});
+  }
+  return c;
+}
+
+const Registration reg{Case{
+    .name = "noh",
+    .summary = "Noh implosion (1D/2D/3D): post-shock density 4^d and shock speed 1/3 against the exact solution",
+    .n_counts = "particles per unit length of the initial lattice",
+    .tags = {"gate", "extreme", "sweep"},
+    .params = [] {
+      std::vector<ParamSpec> ps = {integer_param("n", 200, "particles per unit length"),
+                                   integer_param("dim", 1, "dimension 1, 2 or 3"),
+                                   real_param("t_end", 0.6, "end time (shock at t_end / 3)", 0.0),
+                                   real_param("u_cold", 1e-6, "specific internal energy of the inflowing gas")};
+      for (auto& q : extreme::method_params(5.0 / 3.0, 2.4)) ps.push_back(q);
+      return ps;
+    }(),
+    .levels = {200, 400, 800},
+    .gate_levels = {200},
+    .expected_order = [](const Params&) { return std::map<std::string, double>{{"rho_post", 1.0}, {"shock_speed", 1.0}}; },
+    .expected_why = "shock-limited: first order in h at fixed hfact",
+    .variants = {{}, {"dim=2"}},  // 3D: `sphv sweep noh --set dim=3` (too big for CI)
+    .levels_for = [](const Params& p, std::vector<long> l) {
+      // 1D 200, 400, 800; 2D 50, 70, 100; 3D 25, 35, 50 (the gate's 200 maps to the first).
+      const long d = p.integer("dim");
+      for (auto& v : l) v = d == 1 ? v : static_cast<long>(std::lround((d == 2 ? 50.0 : 25.0) * std::sqrt(v / 200.0)));
+      return l;
+    },
+    .validate = validate,
+    .run = run,
+    .gates = gates,
+}};
+
+}  // namespace
+}  // namespace sphv
