@@ -113,7 +113,9 @@ def run_figure(f, title_suffix, out, stem):
     for k, srs in enumerate(f["series"]):
         x = np.array([v if v is not None else np.nan for v in srs["x"]], float)
         y = np.array([v if v is not None else np.nan for v in srs["y"]], float)
-        style = {"points": dict(ls="none", marker=".", ms=3), "dashed": dict(ls="--"), "line": dict(ls="-")}
+        marker = "o" if len(x) <= 12 else None  # short series (sweeps, benchmarks) show their points
+        style = {"points": dict(ls="none", marker=".", ms=3), "dashed": dict(ls="--", marker=marker, ms=3),
+                 "line": dict(ls="-", marker=marker, ms=3)}
         ax.plot(x, y, label=srs["label"], color=f"C{k % 10}", **style.get(srs["style"], {}))
     ax.set_xscale(f["xscale"])
     ax.set_yscale(f["yscale"])

@@ -10,6 +10,7 @@
 
 #include "sph/box.hpp"
 #include "sph/neighbour_list.hpp"
+#include "sph/pairs.hpp"
 
 namespace sph {
 
@@ -148,7 +149,7 @@ NeighbourList grid_search(const std::vector<Vec<D>>& x, const std::vector<double
   std::vector<std::vector<int>> parts;
   std::vector<int> owner(n);
   std::vector<std::size_t> local(n);
-#pragma omp parallel
+#pragma omp parallel if (n >= parallel_threshold)
   {
     const int nt = omp_get_num_threads(), t = omp_get_thread_num();
 #pragma omp single
@@ -175,7 +176,7 @@ NeighbourList grid_search(const std::vector<Vec<D>>& x, const std::vector<double
   }
   for (std::size_t i = 0; i < n; ++i) nl.offset[i + 1] += nl.offset[i];
   nl.j.resize(nl.offset[n]);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n >= parallel_threshold)
   for (std::size_t i = 0; i < n; ++i)
     std::copy_n(parts[owner[i]].begin() + local[i], nl.offset[i + 1] - nl.offset[i], nl.j.begin() + nl.offset[i]);
   return nl;

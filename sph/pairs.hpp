@@ -7,6 +7,10 @@
 
 namespace sph {
 
+// Below this many particles a pair loop runs on one thread: forking a team costs more than it
+// saves, and small runs (1D tubes, heat tests) take thousands of steps.
+inline constexpr std::size_t parallel_threshold = 4096;
+
 // Symmetric smoothing length of a pair (errata, 9.4.4): h_ij = (h_i + h_j) / 2.
 inline double h_ij(double hi, double hj) { return 0.5 * (hi + hj); }
 
@@ -18,7 +22,7 @@ void for_each_pair(const std::vector<Vec<D>>& x, const std::vector<double>& h,
                    const NeighbourList& nl, const Box<D>& box, F&& f) {
   const Vec<D> L = box.length(), wrap = box.wrap_factor();
   const std::size_t n = x.size();
-#pragma omp parallel for schedule(dynamic, 256)
+#pragma omp parallel for schedule(dynamic, 256) if (n >= parallel_threshold)
   for (std::size_t i = 0; i < n; ++i)
     for (int j : nl.of(i)) {
       const Vec<D> rij = min_image<D>(x[i] - x[j], L, wrap);

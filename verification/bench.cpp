@@ -24,9 +24,9 @@ namespace sphv {
 namespace {
 
 struct BenchOptions {
-  std::vector<long> sizes = {10000, 100000, 1000000};
+  std::vector<long> sizes = {10000, 30000, 100000, 300000, 1000000};
   std::vector<int> threads;
-  long tree_max = 250000, direct_max = 20000;
+  long tree_max = 300000, direct_max = 30000;
   std::filesystem::path out = "runs/bench";
 };
 

@@ -2,6 +2,7 @@
 #include <functional>
 #include <map>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "verification/params.hpp"
@@ -53,6 +54,18 @@ struct Registration {
 };
 const std::vector<Case>& catalogue();
 const Case& find_case(const std::string& name);  // throws InputError for an unknown name
+
+// Calls f(std::integral_constant<int, D>{}) for D = the parameter "dim" (1, 2 or 3): the one
+// place where a case's runtime dimension becomes a template argument.
+template <class F>
+Result by_dimension(const Params& p, F&& f) {
+  switch (p.integer("dim")) {
+    case 1: return f(std::integral_constant<int, 1>{});
+    case 2: return f(std::integral_constant<int, 2>{});
+    case 3: return f(std::integral_constant<int, 3>{});
+  }
+  throw InputError("parameter dim must be 1, 2 or 3, got " + std::to_string(p.integer("dim")));
+}
 
 // Runs one case with validated parameters, timing it; writes DIR/result.json when dir is set.
 Result run_case(const Case& c, const Params& p);

@@ -32,3 +32,17 @@ TEST_CASE("the catalogue has gated cases with checks", "[catalogue]") {
 
 TEST_CASE("gate: kernel", "[gate][kernel]") { gate("kernel"); }
 TEST_CASE("gate: interpolation", "[gate][interpolation]") { gate("interpolation"); }
+
+TEST_CASE("drift baselines catch an error that grows", "[baseline]") {
+  const sphv::Case& c = sphv::find_case("kernel");
+  const sphv::Sweep s = sphv::run_sweep(c, c.gate_levels, {});
+  int drift = 0;
+  for (const auto& ch : s.checks) drift += ch.name.rfind("drift_", 0) == 0 && ch.pass();
+  REQUIRE(drift > 0);  // reference/baselines/kernel.json exists and today's errors match it
+  std::vector<sphv::Result> grown = s.runs;
+  grown.back().errors.begin()->second *= 1.2;  // beyond the 1.1 factor
+  const sphv::Sweep g = sphv::summarise(c, {}, s.levels, grown);
+  int failed = 0;
+  for (const auto& ch : g.checks) failed += !ch.pass();
+  REQUIRE(failed == 1);
+}
