@@ -108,11 +108,7 @@ Result run_dim(const Params& prm) {
 }
 
 Result run(const Params& p) {
-  switch (p.integer("dim")) {
-    case 1: return run_dim<1>(p);
-    case 2: return run_dim<2>(p);
-    default: return run_dim<3>(p);
-  }
+  return by_dimension(p, [&](auto d) { return run_dim<d>(p); });
 }
 
 void validate(const Params& p) {
