@@ -18,6 +18,7 @@
 #include "sph/euler.hpp"
 #include "sph/hydro.hpp"
 #include "sph/hydro_density.hpp"
+#include "sph/hydro_forms.hpp"
 #include "sph/hydro_smoothing_length.hpp"
 #include "sph/lattice.hpp"
 #include "sph/smoothing_length.hpp"
@@ -105,8 +106,7 @@ sph::HydroOutcome evolve_gas(sph::Particles<D>& p, const sph::Box<D>& box, const
     GasScene<D, E> s{{{}, eos, {}, energy, visc}};
     return sph::evolve(s, p, box, m.controls, hooks);
   };
-  if (m.energy == "41") return with_h(sph::EnergySymmetric<D, sph::Lambda1>{});
-  return with_h(sph::EnergyAsymmetric<D, sph::EnergyForm::difference38>{});
+  return sph::with_energy_form<D>(m.energy, 1.0, with_h);
 }
 
 // Mean of value over particles in radial bins [k dr, (k+1) dr), k < bins, around the origin.
