@@ -23,6 +23,7 @@
 #include "sph/lattice.hpp"
 #include "sph/smoothing_length.hpp"
 #include "verification/params.hpp"
+#include "verification/cases/hydro_step_params.hpp"
 #include "verification/cases/sod_tube.hpp"
 #include "verification/result.hpp"
 
@@ -41,18 +42,17 @@ struct Method {
 };
 
 inline std::vector<ParamSpec> method_params(double gamma, double hfact) {
-  return {real_param("gamma", gamma, "adiabatic index", 1.0),
-          real_param("hfact", hfact, "support radius / particle spacing, fixes the neighbour number (50)", 0.0),
-          choice_param("energy", "38", "energy form paired with Euler (23): (38) or (41)", {"38", "41"}),
-          choice_param("hmode", "iterate50", "smoothing length: (50) iterated with the density, (53), or fixed",
-                       {"iterate50", "rate53", "fixed"}),
-          real_param("alpha", 1.0, "artificial viscosity alpha (45)", -1e-300),
-          real_param("beta", 2.0, "artificial viscosity beta (45)", -1e-300),
-          choice_param("timestep", "courant", "signal-speed Courant + acceleration criterion, or (43)",
-                       {"courant", "chapter"}),
-          real_param("C", 0.3, "Courant number", 0.0),
-          real_param("eta", 0.3, "eta of (43)", 0.0),
-          integer_param("max_steps", 20000, "step budget (ends with a verdict)")};
+  std::vector<ParamSpec> ps = {
+      real_param("gamma", gamma, "adiabatic index", 1.0),
+      real_param("hfact", hfact, "support radius / particle spacing, fixes the neighbour number (50)", 0.0),
+      choice_param("energy", "38", "energy form paired with Euler (23): (38) or (41)", {"38", "41"}),
+      choice_param("hmode", "iterate50", "smoothing length: (50) iterated with the density, (53), or fixed",
+                   {"iterate50", "rate53", "fixed"}),
+      real_param("alpha", 1.0, "artificial viscosity alpha (45)", -1e-300),
+      real_param("beta", 2.0, "artificial viscosity beta (45)", -1e-300)};
+  for (auto& q : time_step_params()) ps.push_back(q);
+  ps.push_back(integer_param("max_steps", 20000, "step budget (ends with a verdict)"));
+  return ps;
 }
 
 inline Method method(const Params& p) {
@@ -63,10 +63,7 @@ inline Method method(const Params& p) {
   m.energy = p.text("energy");
   m.alpha = p.real("alpha");
   m.beta = p.real("beta");
-  m.controls.step.criterion =
-      p.text("timestep") == "courant" ? sph::TimeStepCriterion::courant : sph::TimeStepCriterion::chapter43;
-  m.controls.step.C = p.real("C");
-  m.controls.step.eta = p.real("eta");
+  read_time_step(p, m.controls.step);
   m.controls.max_steps = p.integer("max_steps");
   return m;
 }
