@@ -76,9 +76,11 @@ using GasScene = sph::Scene<D, sph::SummationDensity<D>, Gas<D>, sph::EulerSymme
 
 // Evolves p to m.controls.t_end. The initial h comes from (50) iterated with the density (also
 // in "fixed" mode, where h then stays). Never throws on a blow-up: the outcome has the verdict.
-template <int D>
+// `extra` terms (e.g. sph::SelfGravity) are appended to the scene by reference, so the caller
+// can read what they keep (e.g. the potential) from its hooks.
+template <int D, class... Extra>
 sph::HydroOutcome evolve_gas(sph::Particles<D>& p, const sph::Box<D>& box, const Method& m,
-                             sph::HydroHooks<D> hooks = {}) {
+                             sph::HydroHooks<D> hooks = {}, Extra&... extra) {
   const sph::SmoothingLengthControl hc{m.hfact, m.h_max};
   try {
     sph::smoothing_length_iterate(p, box, hc);
@@ -97,10 +99,10 @@ sph::HydroOutcome evolve_gas(sph::Particles<D>& p, const sph::Box<D>& box, const
   auto with_h = [&](auto energy) {
     using E = decltype(energy);
     if (m.hmode == "rate53") {
-      GasScene<D, E, sph::SmoothingLengthRate<D>> s{{{}, eos, {}, energy, visc, {}}};
+      GasScene<D, E, sph::SmoothingLengthRate<D>, Extra&...> s{{{}, eos, {}, energy, visc, {}, extra...}};
       return sph::evolve(s, p, box, m.controls, hooks);
     }
-    GasScene<D, E> s{{{}, eos, {}, energy, visc}};
+    GasScene<D, E, Extra&...> s{{{}, eos, {}, energy, visc, extra...}};
     return sph::evolve(s, p, box, m.controls, hooks);
   };
   return sph::with_energy_form<D>(m.energy, 1.0, with_h);
