@@ -88,7 +88,7 @@ sph::HydroOutcome evolve_gas(sph::Particles<D>& p, const sph::Box<D>& box, const
     return {0, 0.0, std::string("unstable: initial smoothing length: ") + e.what()};
   }
   const Gas<D> eos{{m.gamma}};
-  const sph::ArtificialViscosity<D> visc{m.alpha, m.beta, 0.01, 0.5, {}};
+  const sph::ArtificialViscosity<D> visc{m.alpha, m.beta, 0.01, 0.5};
   if (m.hmode == "iterate50") {
     auto user = hooks.constrain;
     hooks.constrain = [user, hc, &box](sph::Particles<D>& q, double t) {

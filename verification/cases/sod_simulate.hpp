@@ -135,7 +135,7 @@ TubeRun simulate_tube(const TubeProblem& pr, const TubeMethod& m, long n) {
   // not from the sharp jump: a sharp jump puts the first low-density particle in a runaway.
   if (m.density != "summation")
     sph::density_summation(L.p, sph::grid_search<D>(L.p.x, L.p.h, L.box), L.box);
-  const sph::ArtificialViscosity<D> visc{m.alpha, m.beta, m.eps, m.h_scale, {}};
+  const sph::ArtificialViscosity<D> visc{m.alpha, m.beta, m.eps, m.h_scale};
   const sph::EquationOfState<D, sph::IdealGas> eos{{pr.gamma}};
   // The runtime choice of forms is resolved here, once, into a scene type; "auto" pairs the
   // Euler form with its energy form.
