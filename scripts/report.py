@@ -282,7 +282,10 @@ def main():
                         f"<td>{fmt(r['particle_updates_per_s'])}</td><td>{fmt(r['pairs_per_s'])}</td></tr>")
         body.append("</table><p>Fitted cost slopes (time ~ N^slope): " +
                     ", ".join(f"{html.escape(k)} {fmt(v, '.2f')}" for k, v in b["fitted_slopes"].items()) +
-                    ". Bytes per particle: " + ", ".join(f"N={k}: {v:.0f}" for k, v in b["bytes_per_particle"].items()) + ".</p>")
+                    ". Bytes per particle (hydro state + neighbour list, counted): " +
+                    ", ".join(f"N={k}: {v:.0f}" for k, v in b["bytes_per_particle"].items()) +
+                    "; peak resident memory per particle (measured, whole process): " +
+                    ", ".join(f"N={k}: {v:.0f}" for k, v in b.get("peak_resident_bytes_per_particle", {}).items()) + ".</p>")
 
     summary = ["<table><tr><th>case</th><th>variant</th><th>gates</th><th>run verdicts</th><th>sweep wall s</th></tr>"]
     for case, variant, passed, verdicts, wall in rows:

@@ -1,6 +1,7 @@
 #include "verification/bench.hpp"
 
 #include <omp.h>
+#include <sys/resource.h>
 
 #include <chrono>
 #include <cmath>
@@ -92,9 +93,16 @@ std::vector<Row> measure(long n_wanted, int threads, const BenchOptions& o, doub
   return rows;
 }
 
+// Peak resident memory of the process so far, in bytes.
+double peak_resident_bytes() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return 1024.0 * static_cast<double>(u.ru_maxrss);
+}
+
 void bench(const BenchOptions& o) {
   std::vector<Row> rows;
-  std::map<long, double> bytes;
+  std::map<long, double> bytes, resident;
   std::printf("%-38s %9s %7s %10s %14s %14s\n", "stage", "N", "threads", "seconds", "updates/s", "pairs/s");
   for (int threads : o.threads)
     for (long n : o.sizes) {
@@ -106,6 +114,9 @@ void bench(const BenchOptions& o) {
         std::fflush(stdout);
       }
       bytes[rows.back().n] = b;
+      // Measured: the process's peak over a pass of ascending N is set by the largest N so far
+      // (the first thread count's pass only: later passes start at that peak).
+      if (threads == o.threads.front()) resident[rows.back().n] = peak_resident_bytes() / rows.back().n;
     }
 
   // Cost against N with fitted slopes (GSL least squares on log-log), at the most threads.
@@ -139,15 +150,20 @@ void bench(const BenchOptions& o) {
   for (const Row& r : rows)
     jr.push_back({{"stage", r.stage}, {"n", r.n}, {"threads", r.threads}, {"seconds", r.seconds},
                   {"pairs", r.pairs}, {"particle_updates_per_s", r.n / r.seconds}, {"pairs_per_s", r.pairs / r.seconds}});
+  nlohmann::json jm = nlohmann::json::object();
   for (const auto& [n, b] : bytes) jb[std::to_string(n)] = b;
+  for (const auto& [n, b] : resident) jm[std::to_string(n)] = b;
   const nlohmann::json j = {{"benchmark", "3D uniform gas, lattice jittered 0.1 dx, h = 2.4 dx"},
                             {"rows", jr}, {"fitted_slopes", slopes}, {"bytes_per_particle", jb},
+                            {"peak_resident_bytes_per_particle", jm},
                             {"figures", {to_json(fig), to_json(upd)}}, {"provenance", provenance()}};
   write_atomically(o.out / "bench.json", j.dump(1) + "\n");
   std::printf("fitted cost slopes (time ~ N^slope):");
   for (const auto& [k, v] : slopes.items()) std::printf(" %s %.2f;", k.c_str(), v.is_number() ? v.get<double>() : NAN);
   std::printf("\nbytes per particle (hydro state + neighbour list):");
   for (const auto& [n, b] : bytes) std::printf(" N=%ld: %.0f", n, b);
+  std::printf("\npeak resident memory per particle (measured, whole process):");
+  for (const auto& [n, b] : resident) std::printf(" N=%ld: %.0f", n, b);
   std::printf("\nwritten %s\n", (o.out / "bench.json").string().c_str());
 }
 

@@ -46,9 +46,10 @@ inline HydroTimes time_hydro_step(sph::Particles<3>& p, const sph::Box<3>& box,
   derivs(p, d);
   const double dt = 1e-4;
   t.step = timer([&] { kdk_leapfrog_step(p, d, dt, derivs); });
-  // Particle state (x, v: 6 doubles; m, rho, p, c, u, h: 6), derivatives (6), viscosity's mu_max,
-  // neighbour list (one int per pair, one offset per particle).
-  t.bytes_per_particle = (12 + 6 + 1 + 1) * 8.0 + 4.0 * t.pairs / p.size();
+  // Particle state (x, v: 6 doubles; m, rho, p, c, u, h: 6), derivatives (dv/dt: 3; du/dt,
+  // drho/dt, dh/dt, mu_max: 4) and the KDK step's copy of them, neighbour list (one int per pair,
+  // an offset and a place in the visiting order per particle).
+  t.bytes_per_particle = (12 + 7 + 7) * 8.0 + 12.0 + 4.0 * t.pairs / p.size();
   return t;
 }
 
