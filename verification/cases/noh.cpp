@@ -8,6 +8,7 @@
 #include "reference/noh.hpp"
 #include "verification/case.hpp"
 #include "verification/cases/extreme_hydro.hpp"
+#include "verification/cases/radial_result.hpp"
 #include "verification/sweep.hpp"
 
 namespace sphv {
@@ -46,13 +47,11 @@ Result run_dim(const Params& prm) {
   m.h_max = 3.0 * h0;
 
   const sph::HydroOutcome out = extreme::evolve_gas(p, box, m);
-  Result r;
-  r.n_particles = p.size();
-  r.verdict = out.verdict == "ok" ? "stable" : out.verdict;
+  Result r = radial::start(p.size(), out);
   const double rho_post = exact.post_shock_density(), Rs = exact.shock_radius(out.t);
   r.extra = {{"steps", out.steps}, {"t_reached", out.t}, {"rho_post_exact", rho_post}, {"R0", R0},
              {"shock_radius_exact", Rs}};
-  if (out.verdict != "ok") return r;
+  if (r.verdict != "stable") return r;
 
   const std::vector<double> rad = extreme::radii(p);
   // Post-shock density away from the wall-heated centre and from the smeared shock: the mean
@@ -65,14 +64,9 @@ Result run_dim(const Params& prm) {
   const double rho_mid = cnt > 0 ? sum / cnt : 0.0;
   // Shock position: the radius where the binned density falls, going outwards, through the
   // midpoint of the exact post-shock and pre-shock (4^(d-1) rho0 for gamma = 5/3) values.
-  const double pre = exact.at(Rs * 1.0001, out.t).rho, half = 0.5 * (rho_post + pre);
+  const double pre = exact.at(Rs * 1.0001, out.t).rho;
   const extreme::Profile prof = extreme::radial_profile(rad, p.rho, 2.0 * Rs, 40);
-  double R_front = 0.0;
-  for (std::size_t b = 0; b + 1 < prof.r.size(); ++b)
-    if (prof.r[b] > 0.25 * Rs && prof.mean[b] >= half && prof.mean[b + 1] < half) {
-      R_front = prof.r[b] + (prof.r[b + 1] - prof.r[b]) * (prof.mean[b] - half) / (prof.mean[b] - prof.mean[b + 1]);
-      break;
-    }
+  const double R_front = radial::falling_through(prof, 0.5 * (rho_post + pre), 0.25 * Rs, 0.0);
   r.errors = {{"rho_post", std::abs(rho_mid - rho_post) / rho_post},
               {"shock_speed", std::abs(R_front / out.t - exact.shock_speed()) / exact.shock_speed()}};
   r.functionals = {{"rho_post", rho_mid}, {"shock_speed", R_front / out.t}};
@@ -85,24 +79,17 @@ Result run_dim(const Params& prm) {
   r.extra["wall_u_ratio"] = cnt_c > 0 ? u_c / cnt_c / 0.5 : 0.0;
   r.extra["wall_particles"] = cnt_c;
 
-  Series pts{"SPH particles", {}, {}, "points"}, line{"exact (Noh)", {}, {}, "line"};
-  const std::size_t stride = std::max<std::size_t>(1, p.size() / 4000);
-  for (std::size_t i = 0; i < p.size(); i += stride)
-    if (rad[i] < 3.0 * Rs) pts.x.push_back(rad[i]), pts.y.push_back(p.rho[i]);
-  for (int b = 1; b <= 600; ++b) {
-    const double rr = 3.0 * Rs * b / 600.0;
-    line.x.push_back(rr), line.y.push_back(exact.at(rr, out.t).rho);
-  }
-  r.figures.push_back({"profile_rho", "Noh " + std::to_string(D) + "D, n = " + std::to_string(n) + ": density at t = " +
-                                          std::to_string(out.t),
-                       "radius r", "density rho", "linear", "linear", {pts, line}});
-  Series up{"SPH particles", {}, {}, "points"}, ul{"exact (Noh)", {}, {}, "line"};
-  for (std::size_t i = 0; i < p.size(); i += stride)
-    if (rad[i] < 3.0 * Rs) up.x.push_back(rad[i]), up.y.push_back(p.u[i]);
-  ul.x = {0.0, Rs, Rs, 3.0 * Rs};
-  ul.y = {0.5, 0.5, 0.0, 0.0};
-  r.figures.push_back({"profile_u", "Noh " + std::to_string(D) + "D: specific internal energy (wall heating at r = 0)",
-                       "radius r", "u", "linear", "linear", {up, ul}});
+  const std::string dim = std::to_string(D) + "D";
+  r.figures.push_back(radial::profile_figure(
+      "profile_rho", "Noh " + dim + ", n = " + std::to_string(n) + ": density at t = " + std::to_string(out.t),
+      "radius r", "density rho", rad, p.rho, 3.0 * Rs, 1.0, "exact (Noh)",
+      [&](double x) { return exact.at(x, out.t).rho; }));
+  r.figures.push_back(radial::profile_figure(
+      "profile_u", "Noh " + dim + ": specific internal energy (wall heating at r = 0)", "radius r", "u", rad, p.u,
+      3.0 * Rs, 1.0, "exact (Noh)", [&](double x) {
+        const reference::NohState e = exact.at(x, out.t);
+        return e.p / ((m.gamma - 1.0) * e.rho);
+      }));
   r.particles = extreme::particle_table(p);
   return r;
 }
@@ -120,26 +107,20 @@ void validate(const Params& p) {
 }
 
 std::vector<Check> gates(const Sweep& s) {
-  std::vector<Check> c;
   const Params prm = find_case(s.case_name).parse(s.settings);
   const long d = prm.integer("dim");
   // Measured post-shock density errors at the gate level: 1D n=200 1.3% (also 1.3% at n=400: the
   // deficit is the entropy excess of the start-up collision, not resolution), 2D n=50 7.7%;
   // tolerances about twice that. 3D is not gated (levels only).
   const double tol_rho = d == 1 ? 0.03 : 0.15;
-  for (std::size_t k = 0; k < s.runs.size(); ++k) {
-    const auto& r = s.runs[k];
-    const std::string level = "n" + std::to_string(s.levels[k]);
-    c.push_back({level + "_stable", double(r.verdict == "stable"), 1.0, 1.0, "runs to t_end with a finite, positive state"});
-    if (r.verdict != "stable") continue;
+  return radial::per_level(s, [&](const std::string& level, const Result& r, std::vector<Check>& c) {
     c.push_back({level + "_rho_post", r.errors.at("rho_post"), 0.0, tol_rho,
                  "post-shock density 4^d away from the wall (measured error, margin 2)"});
     // Measured: the shock runs ahead by 4.2% (1D n=200), 5.4% (2D n=50): the wall-heated centre
     // holds less mass, so the shock sits further out. Tolerance 10% (margin ~2).
     c.push_back({level + "_shock_speed", r.errors.at("shock_speed"), 0.0, 0.1,
                  "shock speed 1/3 within 10% (measured, margin 2)"});
-  }
-  return c;
+  });
 }
 
 const Registration reg{Case{
