@@ -114,13 +114,26 @@ void validate(const Params& p) {
 }
 
 std::vector<Check> gates(const Sweep& s) {
-  return radial::per_level(s, [](const std::string& level, const Result& r, std::vector<Check>& c) {
-    // Measured |R_front - R| / R: 2D 1.9% (n=32), 3.7% (n=64); 3D 8.4% (n=16, h0 = R/2), 1.9%
-    // (n=24). Tolerances: 2D 6%, 3D 12% (margin about 1.5 over the worst measured).
+  std::vector<Check> c = radial::per_level(s, [](const std::string& level, const Result& r, std::vector<Check>& c) {
+    // Measured |R_front - R| / R: 2D 1.9%, 1.9%, 0.4% (n = 32, 64, 128); 3D 9.2% (n=16, blast on
+    // 8 particles). Tolerances: 2D 6% (margin 3), 3D 12% (margin 1.3).
     const double tol = r.extra.value("dim", 2) == 3 ? 0.12 : 0.06;
     c.push_back({level + "_shock_radius", r.errors.at("shock_radius"), 0.0, tol,
-                 "R_front within tol of xi_0 (E t^2/rho)^(1/(d+2)) (measured, margin ~1.5)"});
+                 "R_front within tol of xi_0 (E t^2/rho)^(1/(d+2)) (measured, margin >= 1.3)"});
   });
+  // Density L1 order in 2D (needs two levels: `sphv sweep`, and the convergence test). Theory: 1
+  // once the shock's smearing over ~h dominates. Measured (gamma 5/3, (38)): L1 0.277, 0.207,
+  // 0.111 at n = 32, 64, 128, order 0.42 then 0.90 (n = 32: the blast's R/4 is 2.4 spacings);
+  // with the blast on the initial kernel it was 0.277, 0.279, 0.253 (order -0.01, 0.14).
+  // 3D (n = 16, 24: 0.336, 0.349) is pre-asymptotic, the blast on 8 and 32 particles: not gated. Bound 0.25:
+  // the lowest pre-asymptotic pair measured (gamma 1.4: 0.27; (41): 0.49) with a small margin.
+  const auto order = s.observed_order.find("L1_rho");
+  const bool all_stable = std::all_of(s.runs.begin(), s.runs.end(), [](const Result& r) { return r.verdict == "stable"; });
+  if (find_case(s.case_name).parse(s.settings).integer("dim") == 2 && s.runs.size() >= 2 && all_stable &&
+      order != s.observed_order.end())
+    c.push_back({"L1_rho_order", order->second, 0.25, 3.0,
+                 "density L1 converges: observed order >= 0.25 (theory 1; measured 0.42-0.90, pre-asymptotic)"});
+  return c;
 }
 
 const Registration reg{Case{
