@@ -10,10 +10,10 @@ namespace sph {
 template <int D>
 void density_summation(Particles<D>& p, const NeighbourList& nl, const Box<D>& box) {
   using K = CubicSpline<D>;
-  for (std::size_t i = 0; i < p.size(); ++i) p.rho[i] = p.m[i] * K::W(0.0, p.h[i]);
-  for_each_pair<D>(p.x, p.h, nl, box, [&](std::size_t i, int j, const Vec<D>&, double r, double h) {
-    p.rho[i] += p.m[j] * K::W(r, h);
-  });
+  sum_over_pairs<D, double>(
+      p.x, p.h, nl, box,
+      [&](double& rho, std::size_t, int j, const Vec<D>&, double r, double h) { rho += p.m[j] * K::W(r, h); },
+      [&](std::size_t i, double rho) { p.rho[i] = p.m[i] * K::W(0.0, p.h[i]) + rho; });
 }
 
 }  // namespace sph

@@ -9,14 +9,14 @@ enum class EnergyForm { direct37, difference38, swapped40 };
 
 template <int D, EnergyForm F>
 struct EnergyAsymmetric {
-  void pair(const Particles<D>& p, Derivatives<D>& d, const Pair<D>& q) const {
+  void pair(const Particles<D>& p, PairSums<D>& s, const Pair<D>& q) const {
     const double w = p.m[q.j] / (p.rho[q.i] * p.rho[q.j]);
     if constexpr (F == EnergyForm::direct37)
-      d.dudt[q.i] -= w * p.p[q.i] * p.v[q.j].dot(q.gradW);  // (37)
+      s.dudt -= w * p.p[q.i] * p.v[q.j].dot(q.gradW);  // (37)
     else if constexpr (F == EnergyForm::difference38)
-      d.dudt[q.i] += w * p.p[q.i] * (p.v[q.i] - p.v[q.j]).dot(q.gradW);  // (38)
+      s.dudt += w * p.p[q.i] * (p.v[q.i] - p.v[q.j]).dot(q.gradW);  // (38)
     else
-      d.dudt[q.i] += w * p.p[q.j] * (p.v[q.i] - p.v[q.j]).dot(q.gradW);  // (40)
+      s.dudt += w * p.p[q.j] * (p.v[q.i] - p.v[q.j]).dot(q.gradW);  // (40)
   }
 };
 
@@ -26,8 +26,8 @@ struct EnergyAsymmetric {
 template <int D, class Lambda>
 struct EnergySymmetric {
   Lambda lambda{};
-  void pair(const Particles<D>& p, Derivatives<D>& d, const Pair<D>& q) const {
-    d.dudt[q.i] += 0.5 * p.m[q.j] * lambda.factor(p.p[q.i], p.p[q.j], p.rho[q.i], p.rho[q.j]) *
+  void pair(const Particles<D>& p, PairSums<D>& s, const Pair<D>& q) const {
+    s.dudt += 0.5 * p.m[q.j] * lambda.factor(p.p[q.i], p.p[q.j], p.rho[q.i], p.rho[q.j]) *
                    (p.v[q.i] - p.v[q.j]).dot(q.gradW);
   }
 };

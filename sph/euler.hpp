@@ -26,8 +26,8 @@ struct LambdaGeneral {  // (25) with any lambda
 // Not antisymmetric in i, j: momentum is not conserved.
 template <int D>
 struct EulerDirect {
-  void pair(const Particles<D>& p, Derivatives<D>& d, const Pair<D>& q) const {
-    d.dvdt[q.i] -= (p.m[q.j] * p.p[q.j] / (p.rho[q.i] * p.rho[q.j])) * q.gradW;
+  void pair(const Particles<D>& p, PairSums<D>& s, const Pair<D>& q) const {
+    s.dvdt -= (p.m[q.j] * p.p[q.j] / (p.rho[q.i] * p.rho[q.j])) * q.gradW;
   }
 };
 
@@ -35,8 +35,8 @@ struct EulerDirect {
 template <int D, class Lambda>
 struct EulerSymmetric {
   Lambda lambda{};
-  void pair(const Particles<D>& p, Derivatives<D>& d, const Pair<D>& q) const {
-    d.dvdt[q.i] -= (p.m[q.j] * lambda.factor(p.p[q.i], p.p[q.j], p.rho[q.i], p.rho[q.j])) * q.gradW;
+  void pair(const Particles<D>& p, PairSums<D>& s, const Pair<D>& q) const {
+    s.dvdt -= (p.m[q.j] * lambda.factor(p.p[q.i], p.p[q.j], p.rho[q.i], p.rho[q.j])) * q.gradW;
   }
 };
 

@@ -91,8 +91,7 @@ HydroOutcome evolve(Scene<D, Terms...>& scene, Particles<D>& p, const Box<D>& bo
       if (out.steps >= c.max_steps)
         return bad_state("step budget of " + std::to_string(c.max_steps) + " steps exhausted before t_end");
       double dt = c.step.criterion == TimeStepCriterion::courant
-                      ? courant_time_step(p, d, visc ? visc->mu_max : std::vector<double>{},
-                                          visc ? visc->alpha : 0.0, visc ? visc->beta : 0.0, c.step)
+                      ? courant_time_step(p, d, visc ? visc->alpha : 0.0, visc ? visc->beta : 0.0, c.step)
                       : chapter_time_step(p, c.step);
       if (!(dt > 0.0) || !std::isfinite(dt)) return bad_state("time step not positive and finite");
       dt = std::min(dt, c.t_end - out.t);

@@ -18,11 +18,11 @@ enum class ContinuityForm { direct29, difference33 };
 
 template <int D, ContinuityForm F>
 struct ContinuityDensity {
-  void pair(const Particles<D>& p, Derivatives<D>& d, const Pair<D>& q) const {
+  void pair(const Particles<D>& p, PairSums<D>& s, const Pair<D>& q) const {
     if constexpr (F == ContinuityForm::direct29)
-      d.drhodt[q.i] -= p.m[q.j] * p.v[q.j].dot(q.gradW);  // (29)
+      s.drhodt -= p.m[q.j] * p.v[q.j].dot(q.gradW);  // (29)
     else
-      d.drhodt[q.i] -= p.m[q.j] * (p.v[q.j] - p.v[q.i]).dot(q.gradW);  // (33)
+      s.drhodt -= p.m[q.j] * (p.v[q.j] - p.v[q.i]).dot(q.gradW);  // (33)
   }
 };
 

@@ -23,11 +23,35 @@ void for_each_pair(const std::vector<Vec<D>>& x, const std::vector<double>& h,
   const Vec<D> L = box.length(), wrap = box.wrap_factor();
   const std::size_t n = x.size();
 #pragma omp parallel for schedule(dynamic, 256) if (n >= parallel_threshold)
-  for (std::size_t i = 0; i < n; ++i)
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::size_t i = nl.visit(k);
     for (int j : nl.of(i)) {
       const Vec<D> rij = min_image<D>(x[i] - x[j], L, wrap);
       f(i, j, rij, rij.norm(), h_ij(h[i], h[j]));
     }
+  }
+}
+
+// The same loop summing into a per-particle accumulator: f(acc, i, j, r_ij, |r_ij|, h_ij) adds
+// pair j's share to acc (a local, so the sum stays in registers and no store inside the loop can
+// alias the particle data the next pair reads), then store(i, acc) writes i's outputs once.
+template <int D, class Acc, class F, class Store>
+void sum_over_pairs(const std::vector<Vec<D>>& x, const std::vector<double>& h, const NeighbourList& nl,
+                    const Box<D>& box, F&& f, Store&& store) {
+  const Vec<D> L = box.length(), wrap = box.wrap_factor();
+  const std::size_t n = x.size();
+#pragma omp parallel for schedule(dynamic, 256) if (n >= parallel_threshold)
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::size_t i = nl.visit(k);
+    Acc acc{};
+    const Vec<D> xi = x[i];
+    const double hi = h[i];
+    for (int j : nl.of(i)) {
+      const Vec<D> rij = min_image<D>(xi - x[j], L, wrap);
+      f(acc, i, j, rij, rij.norm(), h_ij(hi, h[j]));
+    }
+    store(i, acc);
+  }
 }
 
 }  // namespace sph

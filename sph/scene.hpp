@@ -9,17 +9,26 @@
 
 namespace sph {
 
-// Time derivatives the terms of a scene accumulate.
+// Time derivatives the terms of a scene accumulate, and mu_max = max_j |mu_ij| (46) of the
+// artificial viscosity (0 without), which the Courant condition reads.
 template <int D>
 struct Derivatives {
   std::vector<Vec<D>> dvdt;
-  std::vector<double> dudt, drhodt, dhdt;
+  std::vector<double> dudt, drhodt, dhdt, mu_max;
   void reset(std::size_t n) {
     dvdt.assign(n, Vec<D>::Zero());
     dudt.assign(n, 0.0);
     drhodt.assign(n, 0.0);
     dhdt.assign(n, 0.0);
+    mu_max.assign(n, 0.0);
   }
+};
+
+// The same quantities of one particle i summed over its pairs by the pair loop.
+template <int D>
+struct PairSums {
+  Vec<D> dvdt = Vec<D>::Zero();
+  double dudt = 0.0, drhodt = 0.0, dhdt = 0.0, mu_max = 0.0;
 };
 
 // One interacting pair as the pair loop hands it to the terms: r_ij = r_i - r_j (nearest
@@ -42,7 +51,7 @@ struct Neighbourhood {
 
 // A scene lists its physical terms as types. A term may provide any of
 //   void prepare(Particles<D>&, const Neighbourhood<D>&)                   before the pair loop
-//   void pair(const Particles<D>&, Derivatives<D>&, const Pair<D>&)        inside it (writes only i)
+//   void pair(const Particles<D>&, PairSums<D>&, const Pair<D>&)           inside it (adds i's share)
 //   void finish(const Particles<D>&, const Neighbourhood<D>&, Derivatives<D>&)  after it
 // The pair loop is a fold over the terms that have pair(): a term the scene does not list is not
 // compiled into it, and no flag is tested per pair.
@@ -55,11 +64,19 @@ struct Scene {
     d.reset(p.size());
     std::apply([&](auto&... t) { (prepare(t, p, nb), ...); }, terms);
     if constexpr ((has_pair<Terms> || ...)) {
-      for_each_pair<D>(p.x, p.h, nb.list, nb.box,
-                       [&](std::size_t i, int j, const Vec<D>& rij, double r, double h) {
-                         const Pair<D> pr{i, j, rij, r, h, CubicSpline<D>::gradW(rij, r, h)};
-                         std::apply([&](auto&... t) { (pair(t, p, d, pr), ...); }, terms);
-                       });
+      sum_over_pairs<D, PairSums<D>>(
+          p.x, p.h, nb.list, nb.box,
+          [&](PairSums<D>& s, std::size_t i, int j, const Vec<D>& rij, double r, double h) {
+            const Pair<D> pr{i, j, rij, r, h, CubicSpline<D>::gradW(rij, r, h)};
+            std::apply([&](auto&... t) { (pair(t, p, s, pr), ...); }, terms);
+          },
+          [&](std::size_t i, const PairSums<D>& s) {
+            d.dvdt[i] = s.dvdt;
+            d.dudt[i] = s.dudt;
+            d.drhodt[i] = s.drhodt;
+            d.dhdt[i] = s.dhdt;
+            d.mu_max[i] = s.mu_max;
+          });
     }
     std::apply([&](auto&... t) { (finish(t, p, nb, d), ...); }, terms);
   }
@@ -69,16 +86,16 @@ struct Scene {
 
  private:
   template <class T>
-  static constexpr bool has_pair = requires(T& t, const Particles<D>& p, Derivatives<D>& d, const Pair<D>& pr) {
-    t.pair(p, d, pr);
+  static constexpr bool has_pair = requires(T& t, const Particles<D>& p, PairSums<D>& s, const Pair<D>& pr) {
+    t.pair(p, s, pr);
   };
   template <class T>
   static void prepare(T& t, Particles<D>& p, const Neighbourhood<D>& nb) {
     if constexpr (requires { t.prepare(p, nb); }) t.prepare(p, nb);
   }
   template <class T>
-  static void pair(T& t, const Particles<D>& p, Derivatives<D>& d, const Pair<D>& pr) {
-    if constexpr (has_pair<T>) t.pair(p, d, pr);
+  static void pair(T& t, const Particles<D>& p, PairSums<D>& s, const Pair<D>& pr) {
+    if constexpr (has_pair<T>) t.pair(p, s, pr);
   }
   template <class T>
   static void finish(T& t, const Particles<D>& p, const Neighbourhood<D>& nb, Derivatives<D>& d) {

@@ -26,13 +26,13 @@ struct TimeStepControl {
 //                  C_force sqrt((h_i/2) / |a_i|), C_energy u_i / |du_i/dt| where du_i/dt < 0).
 // The last keeps u positive where a cold particle borders a much hotter one (Toro 3, 4: the
 // symmetric energy forms cool it at a rate set by the hot neighbour's pressure).
-// mu_max may be empty (no artificial viscosity).
+// max_j |mu_ij| is d.mu_max (0 without artificial viscosity, and then alpha, beta do not matter).
 template <int D>
-double courant_time_step(const Particles<D>& p, const Derivatives<D>& d, const std::vector<double>& mu_max,
-                         double alpha, double beta, const TimeStepControl& c) {
+double courant_time_step(const Particles<D>& p, const Derivatives<D>& d, double alpha, double beta,
+                         const TimeStepControl& c) {
   double dt = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < p.size(); ++i) {
-    const double hm = 0.5 * p.h[i], mu = mu_max.empty() ? 0.0 : mu_max[i];
+    const double hm = 0.5 * p.h[i], mu = d.mu_max[i];
     const double signal = p.c[i] + p.v[i].norm() + 1.2 * (alpha * p.c[i] + beta * mu);
     if (signal > 0.0) dt = std::min(dt, c.C * hm / signal);
     const double a = d.dvdt[i].norm();

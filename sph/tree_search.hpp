@@ -73,6 +73,7 @@ NeighbourList tree_search(const Tree<D>& t, const std::vector<Vec<D>>& x, const 
       std::sort(nl.j.begin() + nl.offset[i], nl.j.begin() + nl.offset[i + 1]);
     }
   }
+  nl.order = t.order;  // leaf by leaf: a spatial order for the pair loops
   return nl;
 }
 

@@ -1,7 +1,6 @@
 #pragma once
 #include <algorithm>
 #include <cmath>
-#include <vector>
 
 #include "sph/scene.hpp"
 
@@ -14,21 +13,19 @@ namespace sph {
 template <int D>
 struct ArtificialViscosity {
   double alpha = 1.0, beta = 2.0, eps = 0.01, h_scale = 0.5;
-  std::vector<double> mu_max;  // max_j |mu_ij| per particle, for the Courant condition
 
-  void prepare(const Particles<D>& p, const Neighbourhood<D>&) { mu_max.assign(p.size(), 0.0); }
-
-  void pair(const Particles<D>& p, Derivatives<D>& d, const Pair<D>& q) {
+  // Branch-free: a receding pair has v_ij . r_ij clipped to 0, so mu_ij = Pi_ij = 0 (45) without
+  // a jump that half the pairs would mispredict.
+  void pair(const Particles<D>& p, PairSums<D>& s, const Pair<D>& q) const {
     const Vec<D> vij = p.v[q.i] - p.v[q.j];
-    const double vr = vij.dot(q.rij);
-    if (vr >= 0.0) return;  // (45): only approaching pairs
+    const double vr = std::min(vij.dot(q.rij), 0.0);  // (45): only approaching pairs
     const double h = h_scale * q.h;
     const double mu = h * vr / (q.r * q.r + eps * h * h);  // (46), errata: |r_i - r_j|^2
     const double c = 0.5 * (p.c[q.i] + p.c[q.j]), rho = 0.5 * (p.rho[q.i] + p.rho[q.j]);
     const double Pi = (-alpha * c * mu + beta * mu * mu) / rho;  // (45)
-    d.dvdt[q.i] -= (p.m[q.j] * Pi) * q.gradW;                   // (44)
-    d.dudt[q.i] += 0.5 * p.m[q.j] * Pi * vij.dot(q.gradW);      // (48)
-    mu_max[q.i] = std::max(mu_max[q.i], -mu);
+    s.dvdt -= (p.m[q.j] * Pi) * q.gradW;                         // (44)
+    s.dudt += 0.5 * p.m[q.j] * Pi * vij.dot(q.gradW);            // (48)
+    s.mu_max = std::max(s.mu_max, -mu);
   }
 };
 

@@ -40,6 +40,10 @@ int size() {
   return s;
 }
 
+void barrier() {
+  if (started) MPI_Barrier(MPI_COMM_WORLD);
+}
+
 std::vector<std::string> gather(const std::string& mine) {
   if (!started) return {mine};
   const int n = size();
@@ -61,6 +65,7 @@ void init(int*, char***) {}
 void finalize() {}
 int rank() { return 0; }
 int size() { return 1; }
+void barrier() {}
 std::vector<std::string> gather(const std::string& mine) { return {mine}; }
 #endif
 

@@ -11,6 +11,8 @@ void init(int* argc, char*** argv);  // starts MPI only under mpirun
 void finalize();
 int rank();
 int size();
+// Waits until every rank has arrived here.
+void barrier();
 // Gathers each rank's text to rank 0 (in rank order); other ranks get an empty list.
 std::vector<std::string> gather(const std::string& mine);
 

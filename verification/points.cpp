@@ -96,7 +96,10 @@ std::vector<Result> run_points(const Case& c, const std::vector<Point>& points, 
     if (!opt.force) out[k] = finished(points[k], params[k]);
     if (!out[k]) todo.push_back(k);
   }
-  // Under mpirun each rank takes every size-th remaining point.
+  // Under mpirun each rank takes every size-th remaining point. Every rank must see the same
+  // finished points: none may start writing results before all have looked (a rank that started
+  // late once saw another's fresh results, split the points differently and left some unrun).
+  mpi::barrier();
   const int rank = mpi::rank(), ranks = mpi::size();
   if (rank == 0 && todo.size() < points.size())
     std::fprintf(stderr, "sphv: reusing %zu finished point(s) of %zu (--force reruns them)\n",

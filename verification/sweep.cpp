@@ -57,6 +57,14 @@ std::optional<Gci> grid_convergence_index(const std::vector<double>& n, const st
   return g;
 }
 
+std::vector<Check> order_checks(const Sweep& s, double band, const std::string& why) {
+  std::vector<Check> c;
+  for (const auto& [name, p] : s.expected_order)
+    if (s.observed_order.count(name))
+      c.push_back({"order_" + name, s.observed_order.at(name), p - band, p + band, why});
+  return c;
+}
+
 Sweep summarise(const Case& c, const std::vector<std::string>& settings, const std::vector<long>& levels,
                 std::vector<Result> runs) {
   Sweep s;

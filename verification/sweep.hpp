@@ -44,6 +44,10 @@ double observed_order(const std::vector<double>& n, const std::vector<double>& e
 std::optional<Gci> grid_convergence_index(const std::vector<double>& n, const std::vector<double>& f,
                                           double expected_order);
 
+// Gates on the expected orders: "order_<error>" with the observed order within [p - band, p + band]
+// of the expected p, for each error observed at every level (others get no check).
+std::vector<Check> order_checks(const Sweep& s, double band, const std::string& why);
+
 // Runs the case at each level (parameter n) with the given settings; with out set, writes
 // out/n<level>/result.json as each run finishes and out/sweep.json at the end.
 Sweep run_sweep(const Case& c, const std::vector<long>& levels, const std::vector<std::string>& settings,

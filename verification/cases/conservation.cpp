@@ -73,11 +73,11 @@ Result run(const Params& p) {
     s_ang.x.push_back(x), s_ang.y.push_back(floored(ang));
     s_en.x.push_back(x), s_en.y.push_back(floored(en));
     s_rate.x.push_back(x), s_rate.y.push_back(floored(d.energy_rate));
-    if (row.energy == conservation::matched_energy(row.euler)) {
+    if (row.energy == sph::partner_energy(row.euler.form)) {
       fig_mom.series.push_back(over_time(row.euler.label(), d.t, d.momentum));
       fig_ang.series.push_back(over_time(row.euler.label(), d.t, d.angular));
     }
-    if (row.energy == conservation::matched_energy(row.euler) || row.euler.form == "26")
+    if (row.energy == sph::partner_energy(row.euler.form) || row.euler.form == "26")
       fig_en.series.push_back(over_time(row_label(row), d.t, d.energy));
   }
   fig_table.series = {s_mom, s_ang, s_en, s_rate};

@@ -45,11 +45,9 @@ Drifts run_pairing(const sph::Particles<D>& initial, const EulerChoice& e, const
         {sph::SummationDensity<D>{}, sph::EquationOfState<D, sph::IdealGas>{{5.0 / 3.0}}, terms...}};
     out = run_fixed_steps(scene, p, integrator, dt, steps);
   };
-  with_euler<D>(e, [&](auto euler) {
-    with_energy<D>(energy_form, e.lambda, [&](auto energy) {
-      if (viscosity) go(euler, energy, sph::ArtificialViscosity<D>{});
-      else go(euler, energy);
-    });
+  sph::with_hydro_forms<D>(e.form, energy_form, e.lambda, [&](auto euler, auto energy) {
+    if (viscosity) go(euler, energy, sph::ArtificialViscosity<D>{});
+    else go(euler, energy);
   });
   return out;
 }

@@ -19,7 +19,7 @@ Result run(const Params& p) {
   const auto e = euler_of(p);
   const auto integrator = p.text("integrator") == "kdk" ? sph::IntegratorKind::kdk : sph::IntegratorKind::chapter;
   const auto initial = conservation::colliding_blobs<2>(p.integer("res"), 2.4);
-  const auto d = conservation::run_pairing<2>(initial, e, conservation::matched_energy(e), p.integer("visc") != 0,
+  const auto d = conservation::run_pairing<2>(initial, e, sph::partner_energy(e.form), p.integer("visc") != 0,
                                               integrator, dt, steps);
   Result r;
   r.n_particles = initial.size();
@@ -27,7 +27,7 @@ Result run(const Params& p) {
   r.errors = {{"energy", d.max_of(d.energy)}};  // largest |E(t) - E(0)| / E(0) over the run
   r.extra = {{"dt", dt}, {"steps", steps}, {"energy_rate_residual", d.energy_rate},
              {"momentum", d.max_of(d.momentum)}, {"angular", d.max_of(d.angular)},
-             {"pairing", "(" + e.label() + ")+(" + conservation::matched_energy(e) + ")"}};
+             {"pairing", "(" + e.label() + ")+(" + sph::partner_energy(e.form) + ")"}};
   Series s{"|E(t) - E(0)| / E(0)", {}, {}, "line"};
   for (std::size_t k = 1; k < d.t.size(); ++k) s.x.push_back(d.t[k]), s.y.push_back(std::max(d.energy[k], 1e-18));
   r.figures = {{"energy_time", "Energy error against time, dt = 1/" + std::to_string(p.integer("n")), "time t",

@@ -1,13 +1,11 @@
 #pragma once
 // The Euler forms (22), (23), (25), (26) and energy forms (37), (38), (40), (41), (42) (and the
-// symmetric energy form with (25)'s P_ij) as named runtime choices, each dispatched once to its
-// scene term type.
-#include <stdexcept>
+// symmetric energy form with (25)'s P_ij) of the conservation catalogue, by name; each is
+// dispatched once to its scene term type by sph/hydro_forms.hpp.
 #include <string>
 #include <vector>
 
-#include "sph/energy.hpp"
-#include "sph/euler.hpp"
+#include "sph/hydro_forms.hpp"
 
 namespace sphv::conservation {
 
@@ -49,32 +47,6 @@ inline bool conserves_energy(const EulerChoice& e, const std::string& energy) {
   if (e.form == "23") return energy == "38" || energy == "40" || energy == "41";
   if (e.form == "26") return energy == "42";
   return energy == "25";
-}
-
-// The energy form the chapter pairs with each Euler form (for the time-step study).
-inline std::string matched_energy(const EulerChoice& e) {
-  return e.form == "22" ? "37" : e.form == "23" ? "41" : e.form == "26" ? "42" : "25";
-}
-
-template <int D, class F>
-void with_euler(const EulerChoice& e, F&& f) {
-  if (e.form == "22") f(sph::EulerDirect<D>{});
-  else if (e.form == "23") f(sph::EulerSymmetric<D, sph::Lambda1>{});
-  else if (e.form == "25") f(sph::EulerSymmetric<D, sph::LambdaGeneral>{sph::LambdaGeneral{e.lambda}});
-  else if (e.form == "26") f(sph::EulerSymmetric<D, sph::Lambda2>{});
-  else throw std::invalid_argument("unknown Euler form " + e.form);
-}
-
-template <int D, class F>
-void with_energy(const std::string& energy, double lambda, F&& f) {
-  using enum sph::EnergyForm;
-  if (energy == "37") f(sph::EnergyAsymmetric<D, direct37>{});
-  else if (energy == "38") f(sph::EnergyAsymmetric<D, difference38>{});
-  else if (energy == "40") f(sph::EnergyAsymmetric<D, swapped40>{});
-  else if (energy == "41") f(sph::EnergySymmetric<D, sph::Lambda1>{});
-  else if (energy == "42") f(sph::EnergySymmetric<D, sph::Lambda2>{});
-  else if (energy == "25") f(sph::EnergySymmetric<D, sph::LambdaGeneral>{sph::LambdaGeneral{lambda}});
-  else throw std::invalid_argument("unknown energy form " + energy);
 }
 
 }  // namespace sphv::conservation

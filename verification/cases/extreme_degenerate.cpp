@@ -20,7 +20,22 @@ double max_speed(const auto& p) {
   return v;
 }
 
-Result isolated(const Params& prm, extreme::Method m) {
+// Evolves p to t_end with h capped at h_max; the Result starts with the particle count and verdict.
+struct Evolved {
+  sph::HydroOutcome out;
+  Result r;
+};
+template <int D>
+Evolved evolve(sph::Particles<D>& p, const sph::Box<D>& box, extreme::Method m, double h_max, double t_end) {
+  m.h_max = h_max;
+  m.controls.t_end = t_end;
+  Evolved e{extreme::evolve_gas(p, box, m), {}};
+  e.r.n_particles = p.size();
+  e.r.verdict = e.out.verdict == "ok" ? "stable" : e.out.verdict;
+  return e;
+}
+
+Result isolated(const extreme::Method& m) {
   sph::Box<2> box = sph::unit_box<2>(false);
   sph::Particles<2> p;
   p.resize(1);
@@ -29,20 +44,15 @@ Result isolated(const Params& prm, extreme::Method m) {
   p.rho[0] = 1.0;
   p.u[0] = 1.0;
   p.h[0] = 0.05;
-  m.h_max = 0.4;
-  m.controls.t_end = 0.1;
-  const auto out = extreme::evolve_gas(p, box, m);
-  Result r;
-  r.n_particles = 1;
-  r.verdict = out.verdict == "ok" ? "stable" : out.verdict;
-  const double self = p.m[0] * sph::CubicSpline<2>::W(0.0, m.h_max);  // (49)
+  const double h_max = 0.4;
+  auto [out, r] = evolve(p, box, m, h_max, 0.1);
+  const double self = p.m[0] * sph::CubicSpline<2>::W(0.0, h_max);  // (49)
   r.errors = {{"self_density", std::abs(p.rho[0] - self) / self}, {"speed", max_speed(p)}};
   r.extra = {{"h", p.h[0]}, {"rho", p.rho[0]}, {"rho_self_49", self}, {"steps", out.steps}};
-  (void)prm;
   return r;
 }
 
-Result coincident(const Params& prm, extreme::Method m) {
+Result coincident(const Params& prm, const extreme::Method& m) {
   const int n = static_cast<int>(prm.integer("n"));
   sph::Box<2> box = sph::unit_box<2>(true);
   sph::Particles<2> p = sph::lattice<2>(n, box, 1.0, m.hfact);
@@ -50,12 +60,7 @@ Result coincident(const Params& prm, extreme::Method m) {
   const std::size_t k = p.size() / 2 + n / 2;
   p.x.push_back(p.x[k]), p.v.push_back(p.v[k]), p.m.push_back(p.m[k]), p.rho.push_back(p.rho[k]);
   p.p.push_back(0.0), p.c.push_back(0.0), p.u.push_back(p.u[k]), p.h.push_back(p.h[k]);
-  m.h_max = 0.45;
-  m.controls.t_end = prm.real("t_end");
-  const auto out = extreme::evolve_gas(p, box, m);
-  Result r;
-  r.n_particles = p.size();
-  r.verdict = out.verdict == "ok" ? "stable" : out.verdict;
+  auto [out, r] = evolve(p, box, m, 0.45, prm.real("t_end"));
   // The pair feels no force from each other and identical forces from the rest: it never
   // separates (an SPH degeneracy the verdict alone does not reveal).
   r.extra = {{"pair_separation", (p.x[k] - p.x.back()).norm()}, {"max_speed", max_speed(p)}, {"steps", out.steps},
@@ -63,7 +68,7 @@ Result coincident(const Params& prm, extreme::Method m) {
   return r;
 }
 
-Result contrast(const Params& prm, extreme::Method m) {
+Result contrast(const Params& prm, const extreme::Method& m) {
   const int n = static_cast<int>(prm.integer("n"));
   const double R = prm.real("contrast");
   sph::Box<1> box = sph::unit_box<1>(true);
@@ -73,12 +78,7 @@ Result contrast(const Params& prm, extreme::Method m) {
     p.m[i] /= light ? R : 1.0;
     p.u[i] = 1.0 / ((m.gamma - 1.0) * (light ? 1.0 / R : 1.0));  // p = 1 everywhere
   }
-  m.h_max = 0.45;
-  m.controls.t_end = prm.real("t_end");
-  const auto out = extreme::evolve_gas(p, box, m);
-  Result r;
-  r.n_particles = p.size();
-  r.verdict = out.verdict == "ok" ? "stable" : out.verdict;
+  auto [out, r] = evolve(p, box, m, 0.45, prm.real("t_end"));
   r.extra = {{"steps", out.steps}, {"t_reached", out.t}};
   if (out.verdict != "ok") return r;
   double dp = 0.0;
@@ -95,7 +95,7 @@ Result contrast(const Params& prm, extreme::Method m) {
 Result run(const Params& p) {
   const extreme::Method m = extreme::method(p);
   const std::string kind = p.text("kind");
-  if (kind == "isolated") return isolated(p, m);
+  if (kind == "isolated") return isolated(m);
   if (kind == "coincident") return coincident(p, m);
   return contrast(p, m);
 }

@@ -18,10 +18,12 @@
 #include "sph/euler.hpp"
 #include "sph/hydro.hpp"
 #include "sph/hydro_density.hpp"
+#include "sph/hydro_forms.hpp"
 #include "sph/hydro_smoothing_length.hpp"
 #include "sph/lattice.hpp"
 #include "sph/smoothing_length.hpp"
 #include "verification/params.hpp"
+#include "verification/cases/hydro_step_params.hpp"
 #include "verification/cases/sod_tube.hpp"
 #include "verification/result.hpp"
 
@@ -40,18 +42,17 @@ struct Method {
 };
 
 inline std::vector<ParamSpec> method_params(double gamma, double hfact) {
-  return {real_param("gamma", gamma, "adiabatic index", 1.0),
-          real_param("hfact", hfact, "support radius / particle spacing, fixes the neighbour number (50)", 0.0),
-          choice_param("energy", "38", "energy form paired with Euler (23): (38) or (41)", {"38", "41"}),
-          choice_param("hmode", "iterate50", "smoothing length: (50) iterated with the density, (53), or fixed",
-                       {"iterate50", "rate53", "fixed"}),
-          real_param("alpha", 1.0, "artificial viscosity alpha (45)", -1e-300),
-          real_param("beta", 2.0, "artificial viscosity beta (45)", -1e-300),
-          choice_param("timestep", "courant", "signal-speed Courant + acceleration criterion, or (43)",
-                       {"courant", "chapter"}),
-          real_param("C", 0.3, "Courant number", 0.0),
-          real_param("eta", 0.3, "eta of (43)", 0.0),
-          integer_param("max_steps", 20000, "step budget (ends with a verdict)")};
+  std::vector<ParamSpec> ps = {
+      real_param("gamma", gamma, "adiabatic index", 1.0),
+      real_param("hfact", hfact, "support radius / particle spacing, fixes the neighbour number (50)", 0.0),
+      choice_param("energy", "38", "energy form paired with Euler (23): (38) or (41)", {"38", "41"}),
+      choice_param("hmode", "iterate50", "smoothing length: (50) iterated with the density, (53), or fixed",
+                   {"iterate50", "rate53", "fixed"}),
+      real_param("alpha", 1.0, "artificial viscosity alpha (45)", -1e-300),
+      real_param("beta", 2.0, "artificial viscosity beta (45)", -1e-300)};
+  for (auto& q : time_step_params()) ps.push_back(q);
+  ps.push_back(integer_param("max_steps", 20000, "step budget (ends with a verdict)"));
+  return ps;
 }
 
 inline Method method(const Params& p) {
@@ -62,10 +63,7 @@ inline Method method(const Params& p) {
   m.energy = p.text("energy");
   m.alpha = p.real("alpha");
   m.beta = p.real("beta");
-  m.controls.step.criterion =
-      p.text("timestep") == "courant" ? sph::TimeStepCriterion::courant : sph::TimeStepCriterion::chapter43;
-  m.controls.step.C = p.real("C");
-  m.controls.step.eta = p.real("eta");
+  read_time_step(p, m.controls.step);
   m.controls.max_steps = p.integer("max_steps");
   return m;
 }
@@ -78,9 +76,11 @@ using GasScene = sph::Scene<D, sph::SummationDensity<D>, Gas<D>, sph::EulerSymme
 
 // Evolves p to m.controls.t_end. The initial h comes from (50) iterated with the density (also
 // in "fixed" mode, where h then stays). Never throws on a blow-up: the outcome has the verdict.
-template <int D>
+// `extra` terms (e.g. sph::SelfGravity) are appended to the scene by reference, so the caller
+// can read what they keep (e.g. the potential) from its hooks.
+template <int D, class... Extra>
 sph::HydroOutcome evolve_gas(sph::Particles<D>& p, const sph::Box<D>& box, const Method& m,
-                             sph::HydroHooks<D> hooks = {}) {
+                             sph::HydroHooks<D> hooks = {}, Extra&... extra) {
   const sph::SmoothingLengthControl hc{m.hfact, m.h_max};
   try {
     sph::smoothing_length_iterate(p, box, hc);
@@ -88,7 +88,7 @@ sph::HydroOutcome evolve_gas(sph::Particles<D>& p, const sph::Box<D>& box, const
     return {0, 0.0, std::string("unstable: initial smoothing length: ") + e.what()};
   }
   const Gas<D> eos{{m.gamma}};
-  const sph::ArtificialViscosity<D> visc{m.alpha, m.beta, 0.01, 0.5, {}};
+  const sph::ArtificialViscosity<D> visc{m.alpha, m.beta, 0.01, 0.5};
   if (m.hmode == "iterate50") {
     auto user = hooks.constrain;
     hooks.constrain = [user, hc, &box](sph::Particles<D>& q, double t) {
@@ -99,14 +99,13 @@ sph::HydroOutcome evolve_gas(sph::Particles<D>& p, const sph::Box<D>& box, const
   auto with_h = [&](auto energy) {
     using E = decltype(energy);
     if (m.hmode == "rate53") {
-      GasScene<D, E, sph::SmoothingLengthRate<D>> s{{{}, eos, {}, energy, visc, {}}};
+      GasScene<D, E, sph::SmoothingLengthRate<D>, Extra&...> s{{{}, eos, {}, energy, visc, {}, extra...}};
       return sph::evolve(s, p, box, m.controls, hooks);
     }
-    GasScene<D, E> s{{{}, eos, {}, energy, visc}};
+    GasScene<D, E, Extra&...> s{{{}, eos, {}, energy, visc, extra...}};
     return sph::evolve(s, p, box, m.controls, hooks);
   };
-  if (m.energy == "41") return with_h(sph::EnergySymmetric<D, sph::Lambda1>{});
-  return with_h(sph::EnergyAsymmetric<D, sph::EnergyForm::difference38>{});
+  return sph::with_energy_form<D>(m.energy, 1.0, with_h);
 }
 
 // Mean of value over particles in radial bins [k dr, (k+1) dr), k < bins, around the origin.

@@ -119,12 +119,9 @@ Result run(const Params& p) {
 }
 
 std::vector<Check> gates(const Sweep& s) {
-  std::vector<Check> c;
   // Orders in N from sampling theory (see the file comment); the fit over four levels of four
   // realisations each keeps a statistical scatter: band +-0.15.
-  for (const auto& [name, p] : s.expected_order)
-    if (s.observed_order.count(name))
-      c.push_back({"order_" + name, s.observed_order.at(name), p - 0.15, p + 0.15, "Monte Carlo sampling"});
+  std::vector<Check> c = order_checks(s, 0.15, "Monte Carlo sampling");
   for (const auto& r : s.runs) {
     const std::string at = "_n" + std::to_string(r.params.value("n", 0L));
     // z-scores of the direct sum against the analytic fields: standard normal when the code and

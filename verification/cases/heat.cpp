@@ -133,11 +133,8 @@ void validate(const Params& p) {
 }
 
 std::vector<Check> gates(const Sweep& s) {
-  std::vector<Check> c;
-  for (const auto& [name, p] : s.expected_order)
-    if (s.observed_order.count(name))
-      // Band +-0.35 around theory: the fits include pre-asymptotic coarse levels (measured).
-      c.push_back({"order_" + name, s.observed_order.at(name), p - 0.35, p + 0.35, "see expected_why"});
+  // Band +-0.35 around theory: the fits include pre-asymptotic coarse levels (measured).
+  std::vector<Check> c = order_checks(s, 0.35, "see expected_why");
   const auto& fine = s.runs.back();
   // CVODE integrates the lattice operator's eigenmode: its decay rate must be the eigenvalue to
   // about the tolerance (rtol 1e-10 -> 1e-7 allowing for error accumulation over the run).

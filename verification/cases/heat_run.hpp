@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <functional>
+#include <random>
 #include <string>
 #include <variant>
 #include <vector>
@@ -58,6 +59,16 @@ double lattice_lambda_max(int n, double hfact, const std::string& form, double c
   const double lam = form == "brookshaw" ? lambda_max<D>(n, hfact, brookshaw_symbol<D>)
                                          : lambda_max<D>(n, hfact, two_pass_symbol<D>);
   return chi_rho / lattice_kernel_sum<D>(hfact) * lam;
+}
+
+// The initial state of the stability runs: u = 1 plus uniform noise in [-0.1, 0.1] (fixed seed),
+// so that every mode of the operator, the unstable one too, is present.
+inline std::vector<double> noisy_field(std::size_t size) {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> noise(-0.1, 0.1);
+  std::vector<double> u(size);
+  for (auto& v : u) v = 1.0 + noise(rng);
+  return u;
 }
 
 struct Explicit {

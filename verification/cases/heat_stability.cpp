@@ -4,7 +4,6 @@
 // the lattice operator (direct lattice sums: no neighbour search, no pair loop, no scene).
 // Per dimension and ratio h/dx in {2, 2.5, 3, 4}.
 #include <cmath>
-#include <random>
 
 #include "verification/case.hpp"
 #include "verification/cases/heat_run.hpp"
@@ -43,10 +42,7 @@ Result run_dim(const Params& prm) {
     const heat::ParticleSet<D> s(n, hfact, 0.0);
     r.n_particles = s.p.size();
     const heat::Rate f = heat::make_rate<D>(s, form, k);
-    std::mt19937_64 rng(11);
-    std::uniform_real_distribution<double> noise(-0.1, 0.1);
-    std::vector<double> u0(s.p.size());
-    for (auto& v : u0) v = 1.0 + noise(rng);
+    const std::vector<double> u0 = heat::noisy_field(s.p.size());
     const double dx = 1.0 / n, h = hfact * dx;
     const double dt_bound = 2.0 / heat::lattice_lambda_max<D>(n, hfact, form, k.K);
     const double dt_crit = 0.01 * h * h / k.K;  // diffusion criterion with a small C: surely stable

@@ -112,13 +112,10 @@ std::vector<long> levels_for(const Params& p, std::vector<long> levels) {
 }
 
 std::vector<Check> gates(const Sweep& s) {
-  std::vector<Check> c;
   // Band +-0.25 around the theoretical 2: the fitted slope over the gate levels of a lattice is
   // within 0.1 of 2 when measured (see closing note); a lattice-sum floor or a wrong kernel
   // normalisation shifts it by more than 0.3.
-  for (const auto& [name, p] : s.expected_order)
-    c.push_back({"order_" + name, s.observed_order.at(name), p - 0.25, p + 0.25, "O(h^2) kernel smoothing, eq (5)"});
-  return c;
+  return order_checks(s, 0.25, "O(h^2) kernel smoothing, eq (5)");
 }
 
 const Registration reg{Case{

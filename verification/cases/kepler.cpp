@@ -140,12 +140,9 @@ Result run(const Params& p) {
 }
 
 std::vector<Check> gates(const Sweep& s) {
-  std::vector<Check> c;
   // Both schemes are second order (9.3.2; errata): band +-0.3 for the least-squares fit over the
   // gate levels (pre-asymptotic curvature at the coarsest level).
-  for (const auto& [name, p] : s.expected_order)
-    if (s.observed_order.count(name))
-      c.push_back({"order_" + name, s.observed_order.at(name), p - 0.3, p + 0.3, "leapfrog: second order in dt"});
+  std::vector<Check> c = order_checks(s, 0.3, "leapfrog: second order in dt");
   const auto& x = s.runs.back().extra;
   for (const std::string tag : {"chapter", "kdk"}) {
     // Central force: both schemes kick along r and drift along v, so L_z is conserved to

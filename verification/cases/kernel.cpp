@@ -144,9 +144,7 @@ std::vector<Check> gates(const Sweep& s) {
   }
   // Lattice sums converge at the expected order; the fit over oscillating errors is rough, so
   // the band is +-1 around the theoretical order (measured within 0.6, see the closing note).
-  for (const auto& [name, p] : s.expected_order)
-    if (s.observed_order.count(name))
-      c.push_back({"order_" + name, s.observed_order.at(name), p - 1.0, p + 1.0, "Fourier decay of W's C^2 kinks"});
+  for (auto& o : order_checks(s, 1.0, "Fourier decay of W's C^2 kinks")) c.push_back(std::move(o));
   return c;
 }
 

@@ -114,8 +114,7 @@ std::vector<Check> gates(const Sweep& s) {
   if (!jittered) {
     // Theory: O(h^2) smoothing error of a symmetric kernel. Band +-0.3: the measured fit mixes
     // the h^4 term at coarse levels and the second-moment floor at fine ones (measured below).
-    for (const auto& [name, p] : s.expected_order)
-      c.push_back({"order_" + name, s.observed_order.at(name), p - 0.3, p + 0.3, "O(h^2) smoothing error, fixed h/dx"});
+    c = order_checks(s, 0.3, "O(h^2) smoothing error, fixed h/dx");
     // The lattice operator is a convolution: its error on an eigenmode is the symbol's error,
     // computed independently by direct lattice sums; agreement to round-off (1e-9 relative).
     const double pred = fine.extra["lattice_symbol_error"];

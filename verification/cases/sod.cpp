@@ -6,6 +6,7 @@
 #include <map>
 
 #include "verification/case.hpp"
+#include "verification/cases/hydro_step_params.hpp"
 #include "verification/cases/sod_tube.hpp"
 #include "verification/sweep.hpp"
 
@@ -69,12 +70,9 @@ TubeMethod method(const Params& p) {
   m.eps = p.real("eps");
   m.h_scale = p.text("visc_h") == "half" ? 0.5 : 1.0;
   m.controls.integrator = p.text("integrator") == "kdk" ? sph::IntegratorKind::kdk : sph::IntegratorKind::chapter;
-  m.controls.step.criterion =
-      p.text("timestep") == "courant" ? sph::TimeStepCriterion::courant : sph::TimeStepCriterion::chapter43;
-  m.controls.step.C = p.real("C");
+  read_time_step(p, m.controls.step);
   m.controls.step.C_force = p.real("C_force");
   m.controls.step.C_energy = p.real("C_energy");
-  m.controls.step.eta = p.real("eta");
   m.hfact = p.real("hfact");
   m.controls.max_steps = p.integer("max_steps");
   return m;
@@ -159,29 +157,24 @@ std::vector<ParamSpec> params(long n_default, double hfact_default) {
   };
   for (const char* k : state_keys)
     ps.push_back({k, ParamSpec::Kind::Text, "preset", "number overriding the preset (default: the preset's)"});
-  for (auto&& q : std::vector<ParamSpec>{
-           choice_param("density", "summation", "density: summation (27) or continuity (29)/(33)",
-                        {"summation", "continuity29", "continuity33"}),
-           choice_param("euler", "23", "Euler form (22), (23), (25) with lambda, (26)", {"22", "23", "25", "26"}),
-           choice_param("energy", "auto", "energy form; auto = the Euler form's partner (22-37, 23-41, 25-lambda, 26-42)",
-                        {"auto", "37", "38", "40", "41", "42"}),
-           real_param("lambda", 1.5, "lambda of (25)"),
-           choice_param("integrator", "kdk", "kick-drift-kick, or the chapter's leapfrog of 9.3.2", {"kdk", "chapter"}),
-           choice_param("timestep", "courant", "signal-speed Courant + acceleration criterion, or (43)",
-                        {"courant", "chapter"}),
-           real_param("C", 0.3, "Courant number", 0.0),
-           real_param("C_force", 0.25, "acceleration criterion factor", 0.0),
-           real_param("C_energy", 0.25, "cooling criterion dt <= C_energy u / |du/dt| (0: off)", -1e-300),
-           real_param("eta", 0.3, "eta of (43)", 0.0),
-           real_param("alpha", 1.0, "artificial viscosity alpha (45)", -1e-300),
-           real_param("beta", 2.0, "artificial viscosity beta (45)", -1e-300),
-           real_param("eps", 0.01, "epsilon of (46)", 0.0),
-           choice_param("visc_h", "half", "h in mu_ij (46): half the support radius (Monaghan) or the full one",
-                        {"half", "full"}),
-           real_param("hfact", hfact_default, "initial support radius / particle spacing (50)", 0.0),
-           integer_param("max_steps", 200000, "step budget (ends with a verdict)"),
-       })
-    ps.push_back(q);
+  auto add = [&](const std::vector<ParamSpec>& more) { ps.insert(ps.end(), more.begin(), more.end()); };
+  add({choice_param("density", "summation", "density: summation (27) or continuity (29)/(33)",
+                    {"summation", "continuity29", "continuity33"}),
+       choice_param("euler", "23", "Euler form (22), (23), (25) with lambda, (26)", {"22", "23", "25", "26"}),
+       choice_param("energy", "auto", "energy form; auto = the Euler form's partner (22-37, 23-41, 25-lambda, 26-42)",
+                    {"auto", "37", "38", "40", "41", "42"}),
+       real_param("lambda", 1.5, "lambda of (25)"),
+       choice_param("integrator", "kdk", "kick-drift-kick, or the chapter's leapfrog of 9.3.2", {"kdk", "chapter"})});
+  add(time_step_params());
+  add({real_param("C_force", 0.25, "acceleration criterion factor", 0.0),
+       real_param("C_energy", 0.25, "cooling criterion dt <= C_energy u / |du/dt| (0: off)", -1e-300),
+       real_param("alpha", 1.0, "artificial viscosity alpha (45)", -1e-300),
+       real_param("beta", 2.0, "artificial viscosity beta (45)", -1e-300),
+       real_param("eps", 0.01, "epsilon of (46)", 0.0),
+       choice_param("visc_h", "half", "h in mu_ij (46): half the support radius (Monaghan) or the full one",
+                    {"half", "full"}),
+       real_param("hfact", hfact_default, "initial support radius / particle spacing (50)", 0.0),
+       integer_param("max_steps", 200000, "step budget (ends with a verdict)")});
   return ps;
 }
 

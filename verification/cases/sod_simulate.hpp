@@ -3,12 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
-#include <variant>
 
-#include "sph/energy.hpp"
 #include "sph/eos.hpp"
-#include "sph/euler.hpp"
 #include "sph/hydro_density.hpp"
+#include "sph/hydro_forms.hpp"
 #include "sph/hydro_smoothing_length.hpp"
 #include "verification/cases/sod_tube.hpp"
 
@@ -125,33 +123,6 @@ void with_density(const TubeMethod& m, F&& f) {
   else throw std::invalid_argument("unknown density method " + m.density);
 }
 
-template <int D, class F>
-void with_euler(const TubeMethod& m, F&& f) {
-  if (m.euler == "22") f(sph::EulerDirect<D>{});
-  else if (m.euler == "23") f(sph::EulerSymmetric<D, sph::Lambda1>{});
-  else if (m.euler == "25") f(sph::EulerSymmetric<D, sph::LambdaGeneral>{{m.lambda}});
-  else if (m.euler == "26") f(sph::EulerSymmetric<D, sph::Lambda2>{});
-  else throw std::invalid_argument("unknown Euler form " + m.euler);
-}
-
-// "auto" pairs each Euler form with its energy form: 22-37, 23-41, 25-(25's lambda form), 26-42.
-template <int D, class F>
-void with_energy(const TubeMethod& m, F&& f) {
-  using enum sph::EnergyForm;
-  const std::string e = m.energy != "auto" ? m.energy
-                        : m.euler == "22"  ? "37"
-                        : m.euler == "23"  ? "41"
-                        : m.euler == "25"  ? "25"
-                                           : "42";
-  if (e == "37") f(sph::EnergyAsymmetric<D, direct37>{});
-  else if (e == "38") f(sph::EnergyAsymmetric<D, difference38>{});
-  else if (e == "40") f(sph::EnergyAsymmetric<D, swapped40>{});
-  else if (e == "41") f(sph::EnergySymmetric<D, sph::Lambda1>{});
-  else if (e == "42") f(sph::EnergySymmetric<D, sph::Lambda2>{});
-  else if (e == "25") f(sph::EnergySymmetric<D, sph::LambdaGeneral>{{m.lambda}});
-  else throw std::invalid_argument("unknown energy form " + e);
-}
-
 }  // namespace tube
 
 template <int D>
@@ -164,16 +135,16 @@ TubeRun simulate_tube(const TubeProblem& pr, const TubeMethod& m, long n) {
   // not from the sharp jump: a sharp jump puts the first low-density particle in a runaway.
   if (m.density != "summation")
     sph::density_summation(L.p, sph::grid_search<D>(L.p.x, L.p.h, L.box), L.box);
-  const sph::ArtificialViscosity<D> visc{m.alpha, m.beta, m.eps, m.h_scale, {}};
+  const sph::ArtificialViscosity<D> visc{m.alpha, m.beta, m.eps, m.h_scale};
   const sph::EquationOfState<D, sph::IdealGas> eos{{pr.gamma}};
-  // The runtime choice of forms is resolved here, once, into a scene type.
+  // The runtime choice of forms is resolved here, once, into a scene type; "auto" pairs the
+  // Euler form with its energy form.
+  const std::string energy_form = m.energy == "auto" ? sph::partner_energy(m.euler) : m.energy;
   tube::with_density<D>(m, [&](auto density) {
-    tube::with_euler<D>(m, [&](auto euler) {
-      tube::with_energy<D>(m, [&](auto energy) {
-        using S = sph::Scene<D, decltype(density), sph::EquationOfState<D, sph::IdealGas>, decltype(euler),
-                             decltype(energy), sph::ArtificialViscosity<D>, sph::SmoothingLengthRate<D>>;
-        tube::advance(S{{density, eos, euler, energy, visc, {}}}, L, controls, run);
-      });
+    sph::with_hydro_forms<D>(m.euler, energy_form, m.lambda, [&](auto euler, auto energy) {
+      using S = sph::Scene<D, decltype(density), sph::EquationOfState<D, sph::IdealGas>, decltype(euler),
+                           decltype(energy), sph::ArtificialViscosity<D>, sph::SmoothingLengthRate<D>>;
+      tube::advance(S{{density, eos, euler, energy, visc, {}}}, L, controls, run);
     });
   });
   const sph::Particles<D>& p = L.p;

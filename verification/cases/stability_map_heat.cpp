@@ -5,7 +5,6 @@
 // grew). The independent reference is the lattice bound 2 / lambda_max (Fourier symbol of the
 // lattice operator): on the undisturbed lattice (jitter 0) the map's boundary must sit there.
 #include <cmath>
-#include <random>
 
 #include "verification/case.hpp"
 #include "verification/cases/heat_run.hpp"
@@ -41,10 +40,7 @@ Result run_dim(const Params& prm) {
     const heat::ParticleSet<D> s(n, hfact, jitter);
     r.n_particles = s.p.size();
     const heat::Rate f = heat::make_rate<D>(s, form, k);
-    std::mt19937_64 rng(11);
-    std::uniform_real_distribution<double> noise(-0.1, 0.1);
-    std::vector<double> u0(s.p.size());
-    for (auto& v : u0) v = 1.0 + noise(rng);
+    const std::vector<double> u0 = heat::noisy_field(s.p.size());
     double rho_min = s.p.rho[0];
     for (double rho : s.p.rho) rho_min = std::min(rho_min, rho);
     double largest_stable = 0.0;

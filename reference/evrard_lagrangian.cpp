@@ -1,0 +1,153 @@
+#include "reference/evrard_lagrangian.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace reference {
+namespace {
+
+constexpr double pi = 3.14159265358979323846;
+
+struct State {
+  std::vector<double> r, v, e;  // nodes 0..N (r, v), zones 0..N-1 (e)
+};
+
+struct Mesh {
+  int n;
+  double gamma, c1, c2;
+  std::vector<double> dm, mnode, menc;  // zone masses, node masses, M_i of the node shells
+
+  double volume(const State& s, int k) const {
+    return 4.0 * pi / 3.0 * (s.r[k + 1] * s.r[k + 1] * s.r[k + 1] - s.r[k] * s.r[k] * s.r[k]);
+  }
+  // Zone density, sound speed, pressure + viscosity P_k, velocity jump dv_k.
+  void zone(const State& s, int k, double& rho, double& c, double& P, double& dv) const {
+    rho = dm[k] / volume(s, k);
+    c = std::sqrt(gamma * (gamma - 1.0) * std::max(s.e[k], 0.0));
+    dv = s.v[k + 1] - s.v[k];
+    const double q = dv < 0.0 ? rho * (c2 * dv * dv - c1 * c * dv) : 0.0;
+    P = (gamma - 1.0) * rho * s.e[k] + q;
+  }
+
+  // d/dt of (r, v, e): the semi-discrete system of the header.
+  State rate(const State& s) const {
+    State d{std::vector<double>(n + 1, 0.0), std::vector<double>(n + 1, 0.0), std::vector<double>(n, 0.0)};
+    std::vector<double> P(n + 1, 0.0);  // P_N = 0: vacuum outside
+    for (int k = 0; k < n; ++k) {
+      double rho, c, dv;
+      zone(s, k, rho, c, P[k], dv);
+      const double dVdt = 4.0 * pi * (s.r[k + 1] * s.r[k + 1] * s.v[k + 1] - s.r[k] * s.r[k] * s.v[k]);
+      d.e[k] = -P[k] * dVdt / dm[k];
+    }
+    for (int i = 1; i <= n; ++i) {
+      d.r[i] = s.v[i];
+      const double r2 = s.r[i] * s.r[i];
+      d.v[i] = 4.0 * pi * r2 * (P[i - 1] - P[i]) / mnode[i] - menc[i] / r2;
+    }
+    return d;
+  }
+
+  double time_step(const State& s, double courant) const {
+    double dt = std::numeric_limits<double>::infinity();
+    for (int k = 0; k < n; ++k) {
+      double rho, c, P, dv;
+      zone(s, k, rho, c, P, dv);
+      const double signal = c + 2.0 * (c1 * c + c2 * std::abs(std::min(dv, 0.0))) + 1e-300;
+      dt = std::min(dt, courant * (s.r[k + 1] - s.r[k]) / signal);
+    }
+    return dt;
+  }
+
+  void record(const State& s, double t, EvrardSolution& out) const {
+    double kin = 0.0, th = 0.0, w = 0.0;
+    for (int i = 1; i <= n; ++i) kin += 0.5 * mnode[i] * s.v[i] * s.v[i], w -= mnode[i] * menc[i] / s.r[i];
+    for (int k = 0; k < n; ++k) th += dm[k] * s.e[k];
+    out.t.push_back(t);
+    out.kinetic.push_back(kin);
+    out.thermal.push_back(th);
+    out.potential.push_back(w);
+    if (w <= *std::min_element(out.potential.begin(), out.potential.end())) {
+      out.t_max_compression = t;
+      out.r_profile.assign(n, 0.0);
+      out.rho_profile.assign(n, 0.0);
+      for (int k = 0; k < n; ++k) {
+        out.r_profile[k] = 0.5 * (s.r[k] + s.r[k + 1]);
+        out.rho_profile[k] = dm[k] / volume(s, k);
+      }
+    }
+  }
+};
+
+// Returns the first zone with a non-positive volume or energy (or a non-finite value), or -1.
+int first_bad(const State& s, int n) {
+  for (int k = 0; k < n; ++k)
+    if (!(s.r[k + 1] > s.r[k]) || !(s.e[k] > 0.0) || !std::isfinite(s.v[k + 1]) || !std::isfinite(s.e[k])) return k;
+  return -1;
+}
+
+State axpy(const State& s, double a, const State& d) {
+  State y = s;
+  for (std::size_t i = 0; i < y.r.size(); ++i) y.r[i] += a * d.r[i], y.v[i] += a * d.v[i];
+  for (std::size_t k = 0; k < y.e.size(); ++k) y.e[k] += a * d.e[k];
+  return y;
+}
+
+}  // namespace
+
+double EvrardSolution::at(const std::vector<double>& curve, double s) const {
+  if (t.empty()) return 0.0;
+  if (s <= t.front()) return curve.front();
+  if (s >= t.back()) return curve.back();
+  const auto k = static_cast<std::size_t>(std::upper_bound(t.begin(), t.end(), s) - t.begin());
+  const double w = (s - t[k - 1]) / (t[k] - t[k - 1]);
+  return (1.0 - w) * curve[k - 1] + w * curve[k];
+}
+
+EvrardSolution evrard_lagrangian(const EvrardOptions& o) {
+  if (o.zones < 2) throw std::invalid_argument("evrard reference: need at least 2 zones");
+  if (!(o.gamma > 1.0)) throw std::invalid_argument("evrard reference: gamma must be > 1");
+  if (!(o.u0 > 0.0)) throw std::invalid_argument("evrard reference: u0 must be > 0");
+  if (!(o.t_end > 0.0) || !(o.dt_out > 0.0)) throw std::invalid_argument("evrard reference: t_end, dt_out must be > 0");
+  const int n = o.zones;
+  Mesh mesh{n, o.gamma, o.c1, o.c2, {}, {}, {}};
+  State s{std::vector<double>(n + 1), std::vector<double>(n + 1, 0.0), std::vector<double>(n, o.u0)};
+  for (int i = 0; i <= n; ++i) s.r[i] = static_cast<double>(i) / n;
+  mesh.dm.resize(n);
+  for (int k = 0; k < n; ++k) mesh.dm[k] = s.r[k + 1] * s.r[k + 1] - s.r[k] * s.r[k];  // M(r) = r^2
+  mesh.mnode.assign(n + 1, 0.0);
+  mesh.menc.assign(n + 1, 0.0);
+  for (int i = 0; i <= n; ++i) mesh.mnode[i] = 0.5 * ((i > 0 ? mesh.dm[i - 1] : 0.0) + (i < n ? mesh.dm[i] : 0.0));
+  double inside = 0.0;
+  for (int i = 0; i <= n; ++i) mesh.menc[i] = inside + 0.5 * mesh.mnode[i], inside += mesh.mnode[i];
+
+  EvrardSolution out;
+  const long n_out = std::lround(o.t_end / o.dt_out);
+  double t = 0.0;
+  mesh.record(s, t, out);
+  for (long j = 1; j <= n_out || t < o.t_end; ++j) {
+    const double t_next = std::min(o.t_end, j * o.dt_out);
+    while (t < t_next) {
+      if (out.steps >= o.max_steps) throw std::invalid_argument("evrard reference: step budget exhausted");
+      double dt = mesh.time_step(s, o.courant);
+      const bool last = t + dt >= t_next;
+      if (last) dt = t_next - t;
+      const State k1 = mesh.rate(s);
+      const State k2 = mesh.rate(axpy(s, 0.5 * dt, k1));
+      const State k3 = mesh.rate(axpy(s, 0.5 * dt, k2));
+      const State k4 = mesh.rate(axpy(s, dt, k3));
+      s = axpy(axpy(axpy(axpy(s, dt / 6.0, k1), dt / 3.0, k2), dt / 3.0, k3), dt / 6.0, k4);
+      t = last ? t_next : t + dt;
+      ++out.steps;
+      if (const int k = first_bad(s, n); k >= 0)
+        throw std::invalid_argument("evrard reference: zone " + std::to_string(k) + " went bad at t = " +
+                                    std::to_string(t));
+    }
+    mesh.record(s, t, out);
+  }
+  return out;
+}
+
+}  // namespace reference

@@ -1,0 +1,267 @@
+// Case `evrard`: the adiabatic collapse of a cold gas sphere (Evrard 1988) in 3D, SPH with
+// self-gravity from the Barnes-Hut tree (sph/self_gravity.hpp) as a scene term. G = M = R = 1,
+// rho(r) = M / (2 pi R^2 r), u = 0.05 G M / R, at rest. The sphere falls in, bounces at t ~ 1
+// and an outgoing shock heats it (virialisation). Errors: conservation of the total energy
+// E = E_kin + E_th + W through the bounce, and the energy curves against an independent 1D
+// spherical Lagrangian solver (reference/evrard_lagrangian), sampled at common times.
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <mutex>
+#include <tuple>
+
+#include "reference/evrard_lagrangian.hpp"
+#include "sph/self_gravity.hpp"
+#include "verification/case.hpp"
+#include "verification/cases/extreme_hydro.hpp"
+#include "verification/sweep.hpp"
+
+namespace sphv {
+namespace {
+
+constexpr double pi = 3.14159265358979323846;
+
+// The 1D reference, computed once per (zones, gamma, u0, t_end) in a process.
+const reference::EvrardSolution& lagrangian(int zones, double gamma, double u0, double t_end) {
+  static std::mutex mx;
+  static std::map<std::tuple<int, double, double, double>, reference::EvrardSolution> cache;
+  const std::lock_guard<std::mutex> lock(mx);
+  const auto key = std::make_tuple(zones, gamma, u0, t_end);
+  auto it = cache.find(key);
+  if (it == cache.end()) {
+    reference::EvrardOptions o;
+    o.zones = zones, o.gamma = gamma, o.u0 = u0, o.t_end = t_end;
+    it = cache.emplace(key, reference::evrard_lagrangian(o)).first;
+  }
+  return it->second;
+}
+
+// Particles of the unit sphere with rho = 1 / (2 pi r): a cubic lattice cut to the unit ball
+// (uniform, M(<r) = r^3) stretched radially r -> r^(3/2), which makes M(<r) = r^2. Equal masses.
+sph::Particles<3> evrard_sphere(long n, double u0, double hfact) {
+  const int side = std::max(2, static_cast<int>(std::lround(std::cbrt(6.0 * n / pi))));  // pi side^3 / 6 ~ n
+  sph::Box<3> cube = sph::unit_box<3>(false);
+  cube.lo = sph::Vec<3>::Constant(-1.0);
+  const sph::Particles<3> grid = sph::lattice<3>(side, cube, 1.0, hfact);
+  sph::Particles<3> p;
+  std::vector<sph::Vec<3>> x;
+  for (const auto& xi : grid.x)
+    if (xi.norm() < 1.0) x.push_back(xi * std::sqrt(xi.norm()));  // |x| -> |x|^(3/2)
+  p.resize(x.size());
+  p.x = x;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const double r = std::max(p.x[i].norm(), 1e-3);
+    p.m[i] = 1.0 / p.size();
+    p.u[i] = u0;
+    p.rho[i] = 1.0 / (2.0 * pi * r);
+    p.h[i] = hfact * std::cbrt(p.m[i] / p.rho[i]);  // (50) with the target density; iterated below
+  }
+  return p;
+}
+
+// Energy curves of the SPH run, one entry per recorded state.
+struct Curves {
+  std::vector<double> t, kinetic, thermal, potential;
+  void add(const sph::Particles<3>& p, double time, double w) {
+    double k = 0.0, u = 0.0;
+    for (std::size_t i = 0; i < p.size(); ++i) k += 0.5 * p.m[i] * p.v[i].squaredNorm(), u += p.m[i] * p.u[i];
+    t.push_back(time), kinetic.push_back(k), thermal.push_back(u), potential.push_back(w);
+  }
+  double total(std::size_t k) const { return kinetic[k] + thermal[k] + potential[k]; }
+  // Linear interpolation in time (the SPH steps are much finer than the sample spacing).
+  double at(const std::vector<double>& c, double s) const {
+    const auto k = static_cast<std::size_t>(std::upper_bound(t.begin(), t.end(), s) - t.begin());
+    if (k == 0) return c.front();
+    if (k >= t.size()) return c.back();
+    const double w = (s - t[k - 1]) / (t[k] - t[k - 1]);
+    return (1.0 - w) * c[k - 1] + w * c[k];
+  }
+};
+
+Result run(const Params& prm) {
+  extreme::Method m = extreme::method(prm);
+  m.controls.t_end = prm.real("t_end");
+  m.h_max = 2.0;  // the sphere's diameter: an escaping particle's h stops growing there
+  const double u0 = prm.real("u0");
+  sph::SelfGravity gravity{{prm.real("theta"), prm.real("eps"), 1.0, sph::Multipole::quadrupole,
+                            sph::Opening::robust},
+                           {}};
+  sph::Particles<3> p = evrard_sphere(prm.integer("n"), u0, m.hfact);
+  const sph::Box<3> box = sph::unit_box<3>(false);
+
+  Curves sph_e;
+  double w_min = 0.0;
+  std::vector<double> r_comp, rho_comp;
+  double t_comp = 0.0;
+  sph::HydroHooks<3> hooks;
+  hooks.evaluated = [&](const sph::Particles<3>& q, const sph::Derivatives<3>&) {
+    if (sph_e.t.empty()) sph_e.add(q, 0.0, gravity.potential_energy(q));  // the initial state
+  };
+  hooks.stepped = [&](const sph::Particles<3>& q, const sph::Derivatives<3>&, long, double t) {
+    const double w = gravity.potential_energy(q);  // phi of the last evaluation: the state at t
+    sph_e.add(q, t, w);
+    if (w < w_min) w_min = w, t_comp = t, r_comp = extreme::radii(q), rho_comp = q.rho;
+  };
+  const sph::HydroOutcome out = extreme::evolve_gas(p, box, m, hooks, gravity);
+
+  Result r;
+  r.n_particles = p.size();
+  r.verdict = out.verdict == "ok" ? "stable" : out.verdict;
+  r.extra = {{"steps", out.steps}, {"t_reached", out.t}, {"t_end", m.controls.t_end}};
+  if (out.verdict != "ok" || sph_e.t.empty()) return r;
+
+  const int zones = static_cast<int>(prm.integer("zones"));
+  const auto& ref = lagrangian(zones, m.gamma, u0, m.controls.t_end);
+  const auto& ref_half = lagrangian(zones / 2, m.gamma, u0, m.controls.t_end);
+  // Curve differences at the reference's output times, relative to |W(0)| = 2/3 G M^2 / R.
+  const double scale = 2.0 / 3.0;
+  struct Diff {
+    double l1 = 0.0, max = 0.0;
+  };
+  auto diff = [&](const std::vector<double>& a, auto&& b) {
+    Diff d;
+    for (std::size_t k = 0; k < ref.t.size(); ++k) {
+      const double e = std::abs(sph_e.at(a, ref.t[k]) - b(k)) / scale;
+      d.l1 += e / ref.t.size(), d.max = std::max(d.max, e);
+    }
+    return d;
+  };
+  const Diff dk = diff(sph_e.kinetic, [&](std::size_t k) { return ref.kinetic[k]; });
+  const Diff du = diff(sph_e.thermal, [&](std::size_t k) { return ref.thermal[k]; });
+  const Diff dw = diff(sph_e.potential, [&](std::size_t k) { return ref.potential[k]; });
+  double drift = 0.0;
+  for (std::size_t k = 0; k < sph_e.t.size(); ++k)
+    drift = std::max(drift, std::abs(sph_e.total(k) - sph_e.total(0)) / std::abs(sph_e.total(0)));
+  // The reference's own discretisation error: zones against zones / 2, same measure.
+  double ref_err = 0.0;
+  for (std::size_t k = 0; k < ref.t.size(); ++k)
+    for (auto [a, b] : {std::pair{&ref.kinetic, &ref_half.kinetic}, std::pair{&ref.thermal, &ref_half.thermal},
+                        std::pair{&ref.potential, &ref_half.potential}})
+      ref_err = std::max(ref_err, std::abs((*a)[k] - ref_half.at(*b, ref.t[k])) / scale);
+
+  r.errors = {{"energy_conservation", drift}, {"kinetic_L1", dk.l1}, {"kinetic_max", dk.max},
+              {"thermal_L1", du.l1},          {"thermal_max", du.max}, {"potential_L1", dw.l1},
+              {"potential_max", dw.max}};
+  const auto th_peak = std::max_element(sph_e.thermal.begin(), sph_e.thermal.end()) - sph_e.thermal.begin();
+  r.functionals = {{"thermal_peak", sph_e.thermal[th_peak]}, {"potential_min", w_min}, {"t_max_compression", t_comp}};
+  const auto ref_peak = std::max_element(ref.thermal.begin(), ref.thermal.end()) - ref.thermal.begin();
+  r.extra["W0"] = sph_e.potential.front();
+  r.extra["E0"] = sph_e.total(0);
+  r.extra["thermal_peak_time"] = sph_e.t[th_peak];
+  r.extra["reference"] = {{"zones", zones},
+                          {"steps", ref.steps},
+                          {"thermal_peak", ref.thermal[ref_peak]},
+                          {"thermal_peak_time", ref.t[ref_peak]},
+                          {"potential_min", *std::min_element(ref.potential.begin(), ref.potential.end())},
+                          {"t_max_compression", ref.t_max_compression},
+                          {"max_difference_to_half_zones", ref_err}};
+
+  Figure fe{"energies", "Evrard collapse, N = " + std::to_string(p.size()) + ": energies, SPH and 1D Lagrangian",
+            "t (sqrt(R^3 / G M))", "energy (G M^2 / R)", "linear", "linear", {}};
+  const std::size_t stride = std::max<std::size_t>(1, sph_e.t.size() / 400);
+  auto curve = [&](const std::string& label, const std::vector<double>& c) {
+    Series s{"SPH " + label, {}, {}, "line"};
+    for (std::size_t k = 0; k < sph_e.t.size(); k += stride) s.x.push_back(sph_e.t[k]), s.y.push_back(c[k]);
+    return s;
+  };
+  std::vector<double> total(sph_e.t.size());
+  for (std::size_t k = 0; k < total.size(); ++k) total[k] = sph_e.total(k);
+  fe.series = {curve("E_kin", sph_e.kinetic), curve("E_th", sph_e.thermal), curve("W", sph_e.potential),
+               curve("E_tot", total)};
+  for (auto [label, c] : {std::pair{"E_kin", &ref.kinetic}, std::pair{"E_th", &ref.thermal},
+                          std::pair{"W", &ref.potential}})
+    fe.series.push_back({std::string("1D Lagrangian ") + label, ref.t, *c, "dashed"});
+  r.figures.push_back(fe);
+
+  Figure fp{"profile_rho", "Density at maximum compression (SPH t = " + std::to_string(t_comp) + ", 1D t = " +
+                               std::to_string(ref.t_max_compression) + ")",
+            "r (R)", "rho (M / R^3)", "log", "log", {}};
+  Series pts{"SPH particles", {}, {}, "points"};
+  const std::size_t ps = std::max<std::size_t>(1, r_comp.size() / 3000);
+  for (std::size_t i = 0; i < r_comp.size(); i += ps)
+    if (r_comp[i] > 0.0) pts.x.push_back(r_comp[i]), pts.y.push_back(rho_comp[i]);
+  fp.series = {pts, {"1D Lagrangian", ref.r_profile, ref.rho_profile, "line"}};
+  r.figures.push_back(fp);
+  r.particles = extreme::particle_table(p);
+  return r;
+}
+
+void validate(const Params& p) {
+  if (p.integer("n") < 100) throw InputError("evrard: need n >= 100 particles");
+  if (p.integer("zones") < 20) throw InputError("evrard: need zones >= 20 for the 1D reference");
+  if (p.real("theta") > 1.0) throw InputError("evrard: opening angle theta must be <= 1");
+}
+
+std::vector<Check> gates(const Sweep& s) {
+  std::vector<Check> c;
+  for (std::size_t k = 0; k < s.runs.size(); ++k) {
+    const auto& r = s.runs[k];
+    const std::string level = "n" + std::to_string(s.levels[k]);
+    c.push_back({level + "_stable", double(r.verdict == "stable"), 1.0, 1.0,
+                 "runs through the bounce to t_end with a finite, positive state"});
+    if (r.verdict != "stable") continue;
+    // Measured at n = 912 (theta 0.5, eps 0.01, rate53): max |E(t) - E(0)| / |E(0)| = 5.5e-4 (no grad-h
+    // terms with (53), the tree force is not the exact gradient of the tree potential, time steps);
+    // 4.0e-4 at n = 2176. Bound 2e-3 (margin ~4).
+    c.push_back({level + "_energy_conservation", r.errors.at("energy_conservation"), 0.0, 2e-3,
+                 "total energy through the bounce (measured 5.5e-4 at n = 912, margin ~4)"});
+    // Curve errors (L1 over t, relative to |W(0)|) against the 800-zone reference, measured at
+    // n = 912: kinetic 0.182, thermal 0.325, potential 0.519 (the SPH bounce is softer: W_min -1.78
+    // against -2.53). Bounds 1.5 x measured. A collapse without gravity or without a bounce fails them
+    // (W would stay near -0.67 against a mean of about -1.6: potential_L1 ~ 1.4).
+    for (const auto& [name, bound] : {std::pair{"kinetic_L1", 0.27}, std::pair{"thermal_L1", 0.49},
+                                      std::pair{"potential_L1", 0.78}})
+      c.push_back({level + "_" + name, r.errors.at(name), 0.0, bound,
+                   "energy curve against the 1D Lagrangian reference (measured at n = 912, margin 1.5)"});
+    // Peak thermal energy: the task brief quotes 1.1-1.2 for published SPH runs with ~1e3-1e4 particles
+    // (Evrard 1988, Steinmetz & Mueller 1993, Springel 2005; no table of these was found to confirm
+    // them); measured here 1.15 at n = 912, 1.24 at 2176; the 1D reference peaks at 1.75 (800 zones, converging
+    // upwards to ~1.76). The run must lie between a clearly bounced state (0.9) and just above the 1D value.
+    c.push_back({level + "_thermal_peak", r.functionals.at("thermal_peak"), 0.9, 1.8,
+                 "peak E_th between a bounced low-resolution SPH value and the converged 1D value"});
+  }
+  // More particles, closer curves (measured potential_L1: 0.519, 0.451 at n = 912, 2176).
+  if (s.runs.size() >= 2 && s.runs.front().verdict == "stable" && s.runs.back().verdict == "stable")
+    c.push_back({"potential_L1_decreases", s.runs.back().errors.at("potential_L1") / s.runs.front().errors.at("potential_L1"),
+                 0.0, 1.0, "the finest level is closer to the reference than the coarsest"});
+  return c;
+}
+
+const Registration reg{Case{
+    .name = "evrard",
+    .summary = "Evrard collapse (3D, self-gravity by tree): energy conservation and energy curves against 1D Lagrangian",
+    .n_counts = "particles in the sphere (the lattice with the nearest count: 912, 2176, 4224 are exact)",
+    .tags = {"gate", "extreme", "sweep"},
+    .params = [] {
+      std::vector<ParamSpec> ps = {integer_param("n", 912, "particles (a cubic lattice of round((6 n / pi)^(1/3)) cells per diameter cut to the ball)"),
+                                   real_param("theta", 0.5, "Barnes-Hut opening angle (89), robust criterion", 0.0),
+                                   real_param("eps", 0.01, "Plummer softening (77), units of R", 0.0),
+                                   real_param("t_end", 3.0, "end time, units of sqrt(R^3 / G M)", 0.0),
+                                   real_param("u0", 0.05, "initial specific internal energy, units of G M / R", 0.0),
+                                   integer_param("zones", 800, "zones of the 1D Lagrangian reference (compared with zones / 2 for its own error)")};
+      for (auto& q : extreme::method_params(5.0 / 3.0, 2.4)) ps.push_back(q);
+      // Variable h by (53) here: as accurate on this case as (50) iterated and ~1.5x faster (the
+      // iteration's grid searches dominate with the wide range of h in a collapsing sphere).
+      for (auto& q : ps)
+        if (q.name == "hmode") q.default_value = "rate53";
+      return ps;
+    }(),
+    // Lattices of 12, 16, 20 cells per diameter (exact counts, so that the order fit sees the real N);
+    // 16k particles would take ~15 min on this machine.
+    .levels = {912, 2176, 4224},
+    .gate_levels = {912},
+    .expected_order =
+        [](const Params&) {
+          return std::map<std::string, double>{{"kinetic_L1", 1.0 / 3.0}, {"thermal_L1", 1.0 / 3.0},
+                                               {"potential_L1", 1.0 / 3.0}};
+        },
+    .expected_why = "the bounce shock is smeared over a few h by the artificial viscosity: curve errors first order "
+                    "in h ~ N^(-1/3) at fixed hfact, i.e. order 1/3 in the particle number",
+    .variants = {{}},
+    .validate = validate,
+    .run = run,
+    .gates = gates,
+}};
+
+}  // namespace
+}  // namespace sphv
