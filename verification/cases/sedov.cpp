@@ -1,13 +1,24 @@
-// Case `sedov`: the Sedov-Taylor point blast in 2D and 3D. Energy E = 1 is put into the
-// particles within one support radius of the centre of a uniform, nearly cold gas (rho0 = 1) in
-// a periodic box; at t_end the shock should sit at R = xi_0 (E t^2 / rho0)^(1/(d+2)) = 0.3 (box
-// half-width 0.5). Independent reference: reference/sedov (similarity ODEs integrated by GSL,
-// xi_0 from the energy integral, checked against the published table in tests/extreme.cpp).
+// Case `sedov`: the Sedov-Taylor point blast in 2D and 3D. Energy E = 1 is put, as heat, into the
+// particles within r_blast R of the centre of a uniform, nearly cold gas (rho0 = 1) in a periodic
+// box; at t_end the shock should sit at R = xi_0 (E t^2 / rho0)^(1/(d+2)) = 0.3 (box half-width
+// 0.5). Independent reference: reference/sedov (similarity ODEs integrated by GSL, xi_0 from the
+// energy integral, checked against the published table in tests/extreme.cpp).
+//
+// Blast radius: a fixed fraction of R (r_blast = 1/4), not the initial h. Deposited over one
+// kernel of the initial h, the blast sat on the same ~20 particles at every resolution; their
+// volume cannot represent the hot, nearly empty centre, and they kept a resolution-independent
+// excess of the energy as heat (measured, 2D n = 64: 0.30 E as heat within R/2 against 0.127 E
+// exact; kinetic energy 0.237 E against 0.267 E). The profile lagged by 6.3, 4.8, 4.0% of R at
+// n = 32, 64, 128 (best-fitting R) and the density L1 did not converge (0.277, 0.279, 0.253).
+// With the blast on R/4 (the same particles at n = 32): lag 6.3, 2.5, 0.5%, kinetic energy
+// 0.225, 0.262, 0.270 E. The blast's finite size is remembered at t_end; at these levels it is
+// below the shock's smearing (the sweep's order says so).
 #include <cmath>
 
 #include "reference/sedov.hpp"
 #include "verification/case.hpp"
 #include "verification/cases/extreme_hydro.hpp"
+#include "verification/cases/radial_result.hpp"
 #include "verification/sweep.hpp"
 
 namespace sphv {
@@ -27,80 +38,64 @@ Result run_dim(const Params& prm) {
   box.hi = sph::Vec<D>::Constant(0.5);
   sph::Particles<D> p = sph::lattice<D>(n, box, rho0, m.hfact);
   m.h_max = 0.45;  // below half the periodic box
-  // Blast: E shared by kernel weight among the particles within h0 of the centre; the rest has
-  // a thermal energy u_ambient (the similarity solution's cold gas, p0 / p_shock ~ 1e-6).
-  const double h0 = p.h[0];
+  // Blast: E shared by kernel weight W(r, r_b) among the particles within r_b of the centre; all
+  // particles have a thermal energy u_ambient (the similarity solution's cold gas, p0 / p_shock
+  // ~ 1e-6).
+  const double r_b = prm.real("r_blast") * R_target;
   double wsum = 0.0;
-  for (std::size_t i = 0; i < p.size(); ++i) wsum += p.m[i] * sph::CubicSpline<D>::W(p.x[i].norm(), h0);
+  for (std::size_t i = 0; i < p.size(); ++i) wsum += p.m[i] * sph::CubicSpline<D>::W(p.x[i].norm(), r_b);
   for (std::size_t i = 0; i < p.size(); ++i)
-    p.u[i] = prm.real("u_ambient") + E * sph::CubicSpline<D>::W(p.x[i].norm(), h0) / wsum;
+    p.u[i] = prm.real("u_ambient") + E * sph::CubicSpline<D>::W(p.x[i].norm(), r_b) / wsum;
   double E0 = 0.0;
   for (std::size_t i = 0; i < p.size(); ++i) E0 += p.m[i] * p.u[i];
 
   const sph::HydroOutcome out = extreme::evolve_gas(p, box, m);
-  Result r;
-  r.n_particles = p.size();
-  r.verdict = out.verdict == "ok" ? "stable" : out.verdict;
+  Result r = radial::start(p.size(), out);
   r.extra = {{"steps", out.steps}, {"t_reached", out.t}, {"t_end", m.controls.t_end}, {"xi0", exact.xi0()},
-             {"R_exact", exact.shock_radius(E, rho0, m.controls.t_end)}, {"dim", D}};
-  if (out.verdict != "ok") return r;
+             {"R_exact", exact.shock_radius(E, rho0, m.controls.t_end)}, {"dim", D}, {"r_blast", r_b}};
+  if (r.verdict != "stable") return r;
 
-  double E1 = 0.0;
-  for (std::size_t i = 0; i < p.size(); ++i) E1 += p.m[i] * (0.5 * p.v[i].squaredNorm() + p.u[i]);
+  double E1 = 0.0, kinetic = 0.0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    kinetic += 0.5 * p.m[i] * p.v[i].squaredNorm();
+    E1 += p.m[i] * (0.5 * p.v[i].squaredNorm() + p.u[i]);
+  }
   const double R = exact.shock_radius(E, rho0, out.t), dx = 1.0 / n;
   const std::vector<double> rad = extreme::radii(p);
-  // Shock radius: where the density profile (binned at half the spacing) rises, coming from
-  // outside, to half-way between the ambient density and its peak. SPH smooths the jump over a
-  // few h; the half-rise point of a symmetrically smoothed jump is the jump, while the smoothed
-  // peak trails it by about half a kernel width.
+  // Shock radius: where the density profile (binned at half the spacing) falls, going outwards
+  // from its peak, through half-way between the ambient density and the peak. SPH smooths the
+  // jump over a few h; the half-rise point of a symmetrically smoothed jump is the jump, while the
+  // smoothed peak trails it by about half a kernel width.
   const extreme::Profile prof = extreme::radial_profile(rad, p.rho, 0.5, 2 * n);
   const auto peak = std::max_element(prof.mean.begin(), prof.mean.end()) - prof.mean.begin();
-  const double half = 0.5 * (rho0 + prof.mean[peak]);
-  double R_front = prof.r[peak];
-  for (auto k = static_cast<std::size_t>(peak); k + 1 < prof.r.size(); ++k)
-    if (prof.mean[k] >= half && prof.mean[k + 1] < half) {
-      R_front = prof.r[k] + (prof.r[k + 1] - prof.r[k]) * (prof.mean[k] - half) / (prof.mean[k] - prof.mean[k + 1]);
-      break;
-    }
-  const double R_peak = prof.r[peak];
-  // L1 density error, volume-weighted, over the ball r < 1.2 R (shocked gas and some ambient).
-  double vol = 0.0, l1 = 0.0;
+  const double R_front = radial::falling_through(prof, 0.5 * (rho0 + prof.mean[peak]), prof.r[peak], prof.r[peak]);
+  // L1 density error over the ball r < 1.2 R (shocked gas and some ambient gas), per unit volume
+  // of the ball: sum of particle volumes m / rho times |rho - rho_exact|, over the ball's volume.
+  const double ball = (D == 2 ? M_PI : 4.0 / 3.0 * M_PI) * std::pow(1.2 * R, D);
+  double l1 = 0.0;
   for (std::size_t i = 0; i < p.size(); ++i)
-    if (rad[i] < 1.2 * R) {
-      const double w = p.m[i] / p.rho[i];
-      vol += w;
-      l1 += w * std::abs(p.rho[i] - exact.density(rad[i], E, rho0, out.t));
-    }
-  r.errors = {{"shock_radius", std::abs(R_front - R) / R}, {"L1_rho", l1 / vol / rho0}};
+    if (rad[i] < 1.2 * R) l1 += p.m[i] / p.rho[i] * std::abs(p.rho[i] - exact.density(rad[i], E, rho0, out.t));
+  r.errors = {{"shock_radius", std::abs(R_front - R) / R}, {"L1_rho", l1 / ball / rho0}};
   r.functionals = {{"R_front", R_front}, {"rho_peak", prof.mean[peak]}};
   r.extra["R_front"] = R_front;
-  r.extra["R_peak"] = R_peak;
+  r.extra["R_peak"] = prof.r[peak];
   r.extra["rho_peak_binned"] = prof.mean[peak];
   r.extra["rho_peak_exact"] = exact.g(1.0) * rho0;
   r.extra["energy_drift"] = (E1 - E0) / E0;
+  r.extra["kinetic_fraction"] = kinetic / E1;
   r.extra["bin_width"] = 0.5 * dx;
 
-  Series pts{"SPH particles", {}, {}, "points"}, line{"Sedov-Taylor (similarity solution)", {}, {}, "line"};
-  const std::size_t stride = std::max<std::size_t>(1, p.size() / 4000);
-  for (std::size_t i = 0; i < p.size(); i += stride)
-    if (rad[i] < 1.5 * R) pts.x.push_back(rad[i] / R), pts.y.push_back(p.rho[i] / rho0);
-  for (int k = 0; k <= 600; ++k) {
-    const double xi = 1.5 * k / 600.0;
-    line.x.push_back(xi), line.y.push_back(exact.g(xi));
-  }
-  r.figures.push_back({"profile_rho", "Sedov " + std::to_string(D) + "D, n = " + std::to_string(n) + ": density at t = " +
-                                          std::to_string(out.t),
-                       "r / R(t)", "rho / rho0", "linear", "linear", {pts, line}});
-  Series vp{"SPH particles", {}, {}, "points"}, vl{"Sedov-Taylor", {}, {}, "line"};
+  const std::string dim = std::to_string(D) + "D";
+  r.figures.push_back(radial::profile_figure(
+      "profile_rho", "Sedov " + dim + ", n = " + std::to_string(n) + ": density at t = " + std::to_string(out.t),
+      "r / R(t)", "rho / rho0", rad, p.rho, 1.5 * R, R, "Sedov-Taylor (similarity solution)",
+      [&](double x) { return exact.density(x, E, rho0, out.t) / rho0; }));
   const double U = exact.shock_speed(E, rho0, out.t);
-  for (std::size_t i = 0; i < p.size(); i += stride)
-    if (rad[i] < 1.5 * R) vp.x.push_back(rad[i] / R), vp.y.push_back(p.v[i].dot(p.x[i]) / std::max(rad[i], 1e-300) / U);
-  for (int k = 0; k <= 600; ++k) {
-    const double xi = 1.5 * k / 600.0;
-    vl.x.push_back(xi), vl.y.push_back(exact.f(xi));
-  }
-  r.figures.push_back({"profile_v", "Sedov " + std::to_string(D) + "D: radial velocity", "r / R(t)",
-                       "v_r / (dR/dt)", "linear", "linear", {vp, vl}});
+  std::vector<double> v_r(p.size());
+  for (std::size_t i = 0; i < p.size(); ++i) v_r[i] = p.v[i].dot(p.x[i]) / std::max(rad[i], 1e-300) / U;
+  r.figures.push_back(radial::profile_figure("profile_v", "Sedov " + dim + ": radial velocity", "r / R(t)",
+                                             "v_r / (dR/dt)", rad, v_r, 1.5 * R, R, "Sedov-Taylor",
+                                             [&](double x) { return exact.f(x / R); }));
   r.particles = extreme::particle_table(p);
   return r;
 }
@@ -108,24 +103,39 @@ Result run_dim(const Params& prm) {
 Result run(const Params& p) { return p.integer("dim") == 2 ? run_dim<2>(p) : run_dim<3>(p); }
 
 void validate(const Params& p) {
-  if (p.integer("dim") != 2 && p.integer("dim") != 3) throw InputError("sedov: dim must be 2 or 3");
-  if (p.integer("n") < 8) throw InputError("sedov: need n >= 8 particles per side");
+  const long d = p.integer("dim"), n = p.integer("n");
+  if (d != 2 && d != 3) throw InputError("sedov: dim must be 2 or 3");
+  if (n < 8) throw InputError("sedov: need n >= 8 particles per side");
   if (!(p.real("u_ambient") >= 0.0)) throw InputError("sedov: u_ambient must be >= 0");
+  const double r_blast = p.real("r_blast");
+  if (!(r_blast < 1.0)) throw InputError("sedov: r_blast must be below 1 (a fraction of the final shock radius)");
+  // The lattice particles nearest the centre sit at sqrt(d) / (2 n) from it.
+  if (r_blast * R_target <= std::sqrt(double(d)) / (2.0 * n))
+    throw InputError("sedov: r_blast R = " + std::to_string(r_blast * R_target) +
+                     " holds no particle: raise r_blast or n");
 }
 
 std::vector<Check> gates(const Sweep& s) {
-  std::vector<Check> c;
-  for (std::size_t k = 0; k < s.runs.size(); ++k) {
-    const auto& r = s.runs[k];
-    const std::string level = "n" + std::to_string(s.levels[k]);
-    c.push_back({level + "_stable", double(r.verdict == "stable"), 1.0, 1.0, "runs to t_end with a finite, positive state"});
-    if (r.verdict != "stable") continue;
-    // Measured |R_front - R| / R: 2D 1.9% (n=32), 3.7% (n=64); 3D 8.4% (n=16, h0 = R/2), 1.9%
-    // (n=24). Tolerances: 2D 6%, 3D 12% (margin about 1.5 over the worst measured).
+  std::vector<Check> c = radial::per_level(s, [](const std::string& level, const Result& r, std::vector<Check>& c) {
+    // Measured |R_front - R| / R: 2D 1.9%, 1.9%, 0.4% (n = 32, 64, 128); 3D 9.2% (n=16, blast on
+    // 8 particles). Tolerances: 2D 6% (margin 3), 3D 12% (margin 1.3).
     const double tol = r.extra.value("dim", 2) == 3 ? 0.12 : 0.06;
     c.push_back({level + "_shock_radius", r.errors.at("shock_radius"), 0.0, tol,
-                 "R_front within tol of xi_0 (E t^2/rho)^(1/(d+2)) (measured, margin ~1.5)"});
-  }
+                 "R_front within tol of xi_0 (E t^2/rho)^(1/(d+2)) (measured, margin >= 1.3)"});
+  });
+  // Density L1 order in 2D (needs two levels: `sphv sweep`, and the convergence test). Theory: 1
+  // once the shock's smearing over ~h dominates. Measured (gamma 5/3, (38)): L1 0.277, 0.203,
+  // 0.112 at n = 32, 64, 128, order 0.45 then 0.86 (n = 32: the blast's R/4 is 2.4 spacings);
+  // with the blast on the initial kernel it was 0.277, 0.279, 0.253 (order -0.01, 0.14).
+  // gamma 1.4: 0.397, 0.330, 0.213 (0.27, 0.63); (41): 0.283, 0.202, 0.109 (0.49, 0.88).
+  // Bound 0.25: the lowest pre-asymptotic pair measured (gamma 1.4, 0.27), small margin.
+  // 3D (n = 16, 24: 0.306, 0.341) is pre-asymptotic, the blast on 8 and 32 particles: not gated.
+  const auto order = s.observed_order.find("L1_rho");
+  const bool all_stable = std::all_of(s.runs.begin(), s.runs.end(), [](const Result& r) { return r.verdict == "stable"; });
+  if (find_case(s.case_name).parse(s.settings).integer("dim") == 2 && s.runs.size() >= 2 && all_stable &&
+      order != s.observed_order.end())
+    c.push_back({"L1_rho_order", order->second, 0.25, 3.0,
+                 "density L1 converges: observed order >= 0.25 (theory 1; measured 0.27-0.88, pre-asymptotic)"});
   return c;
 }
 
@@ -137,7 +147,8 @@ const Registration reg{Case{
     .params = [] {
       std::vector<ParamSpec> ps = {integer_param("n", 32, "particles per side"),
                                    integer_param("dim", 2, "dimension 2 or 3"),
-                                   real_param("u_ambient", 1e-6, "specific internal energy of the ambient gas")};
+                                   real_param("u_ambient", 1e-6, "specific internal energy of the ambient gas"),
+                                   real_param("r_blast", 0.25, "radius of the blast's heat deposit / R(t_end)", 0.0)};
       for (auto& q : extreme::method_params(5.0 / 3.0, 2.4)) ps.push_back(q);
       return ps;
     }(),
