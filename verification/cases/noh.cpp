@@ -112,13 +112,16 @@ Result run(const Params& p) {
   const long dim = p.integer("dim"), n = p.integer("n");
   const double t_end = p.real("t_end"), hfact = p.real("hfact");
   // n counts per unit length in every dimension: the 1D default (200) means ~1e5 particles in
-  // 2D and ~2e7 in 3D. The finest sweep levels (2D n=100, 3D n=20) have <= 3.4e4. Checked here,
-  // not in validate: a variant's settings are validated with the default n before its levels.
+  // 2D and ~2e7 in 3D. The finest sweep levels (2D n=100, 3D n=20) have <= 3.4e4. Runs above
+  // max_particles are refused (raise it on purpose for a larger run). Checked here, not in
+  // validate: a variant's settings are validated with the default n before its levels.
   const double N = ball_volume(static_cast<int>(dim), gas_radius(t_end, hfact / n)) * std::pow(double(n), dim);  // particles
-  if (N > 5e4)
+  const double cap = p.real("max_particles");
+  if (N > cap)
     throw InputError("noh: n = " + std::to_string(n) + " in " + std::to_string(dim) + "D means ~" +
-                     std::to_string(static_cast<long>(N)) +
-                     " particles (limit 5e4); n counts per unit length: use n ~ 50 in 2D, 10-20 in 3D");
+                     std::to_string(static_cast<long>(N)) + " particles (max_particles " +
+                     std::to_string(static_cast<long>(cap)) +
+                     "); n counts per unit length: use n ~ 50 in 2D, 10-20 in 3D, or raise max_particles");
   return by_dimension(p, [&](auto d) { return run_dim<d>(p); });
 }
 
@@ -166,7 +169,8 @@ const Registration reg{Case{
       std::vector<ParamSpec> ps = {integer_param("n", 200, "particles per unit length (a 1D size: use ~50 in 2D, 10-20 in 3D)"),
                                    integer_param("dim", 1, "dimension 1, 2 or 3"),
                                    real_param("t_end", 0.6, "end time (shock at t_end / 3)", 0.0),
-                                   real_param("u_cold", 1e-6, "specific internal energy of the inflowing gas")};
+                                   real_param("u_cold", 1e-6, "specific internal energy of the inflowing gas"),
+                                   real_param("max_particles", 5e4, "refuse runs with more particles than this", 0.0)};
       for (auto& q : extreme::method_params(5.0 / 3.0, 2.4)) ps.push_back(q);
       return ps;
     }(),
