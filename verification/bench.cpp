@@ -103,6 +103,7 @@ double peak_resident_bytes() {
 void bench(const BenchOptions& o) {
   std::vector<Row> rows;
   std::map<long, double> bytes, resident;
+  std::filesystem::create_directories(o.out);  // an unwritable output is refused before the work
   std::printf("%-38s %9s %7s %10s %14s %14s\n", "stage", "N", "threads", "seconds", "updates/s", "pairs/s");
   for (int threads : o.threads)
     for (long n : o.sizes) {

@@ -72,5 +72,6 @@ foreach(_case theta_zero theta_negative empty header_only negative_mass malforme
   endif()
   sphv_refuses(gravity_${_case} gravity --input ${_in} --out ${_gdir}/out_${_case}.csv ${_extra})
 endforeach()
+sphv_refuses(bench_output_is_a_file bench --sizes 1000 --threads 1 --out ${_gdir}/ok.csv)
 add_test(NAME cli_gravity_ok COMMAND sphv gravity --input ${_gdir}/ok.csv --out ${_gdir}/out_ok.csv --theta 0.7 --multipole mono --softening 0.1)
 set_tests_properties(cli_gravity_ok PROPERTIES PASS_REGULAR_EXPRESSION "relative force error.*99% ")

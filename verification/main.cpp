@@ -177,6 +177,12 @@ int run_main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     std::fprintf(stderr, "sphv: error: %s\n", e.what());
     return 2;
+  } catch (const InputError& e) {  // from commands that run inside the parse (bench, gravity)
+    std::fprintf(stderr, "sphv: error: %s\n", e.what());
+    return 2;
+  } catch (const std::exception& e) {  // e.g. an output path that cannot be written
+    std::fprintf(stderr, "sphv: error: %s\n", e.what());
+    return 3;
   }
   if (threads > 0) omp_set_num_threads(threads);
   opt.exe = fs::canonical("/proc/self/exe");
