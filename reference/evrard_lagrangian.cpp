@@ -1,5 +1,7 @@
 #include "reference/evrard_lagrangian.hpp"
 
+#include "reference/interpolate.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -98,12 +100,7 @@ State axpy(const State& s, double a, const State& d) {
 }  // namespace
 
 double EvrardSolution::at(const std::vector<double>& curve, double s) const {
-  if (t.empty()) return 0.0;
-  if (s <= t.front()) return curve.front();
-  if (s >= t.back()) return curve.back();
-  const auto k = static_cast<std::size_t>(std::upper_bound(t.begin(), t.end(), s) - t.begin());
-  const double w = (s - t[k - 1]) / (t[k] - t[k - 1]);
-  return (1.0 - w) * curve[k - 1] + w * curve[k];
+  return t.empty() ? 0.0 : interpolate_linear(t, curve, s);
 }
 
 EvrardSolution evrard_lagrangian(const EvrardOptions& o) {

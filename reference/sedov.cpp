@@ -1,5 +1,7 @@
 #include "reference/sedov.hpp"
 
+#include "reference/interpolate.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -81,17 +83,9 @@ double Sedov::shock_speed(double E, double rho0, double t) const {
   return 2.0 / (d_ + 2.0) * shock_radius(E, rho0, t) / t;
 }
 
-double Sedov::interpolate(const std::vector<double>& y, double xi) const {
-  if (xi <= xi_.front()) return y.front();
-  const auto it = std::upper_bound(xi_.begin(), xi_.end(), xi);
-  const auto k = static_cast<std::size_t>(it - xi_.begin());
-  const double s = (xi - xi_[k - 1]) / (xi_[k] - xi_[k - 1]);
-  return (1.0 - s) * y[k - 1] + s * y[k];
-}
-
-double Sedov::f(double xi) const { return xi > 1.0 ? 0.0 : interpolate(f_, xi); }
-double Sedov::g(double xi) const { return xi > 1.0 ? 1.0 : interpolate(g_, xi); }
-double Sedov::h(double xi) const { return xi > 1.0 ? 0.0 : interpolate(h_, xi); }
+double Sedov::f(double xi) const { return xi > 1.0 ? 0.0 : interpolate_linear(xi_, f_, xi); }
+double Sedov::g(double xi) const { return xi > 1.0 ? 1.0 : interpolate_linear(xi_, g_, xi); }
+double Sedov::h(double xi) const { return xi > 1.0 ? 0.0 : interpolate_linear(xi_, h_, xi); }
 
 double Sedov::density(double r, double E, double rho0, double t) const {
   return rho0 * g(r / shock_radius(E, rho0, t));

@@ -36,7 +36,6 @@ class Sedov {
   double pressure(double r, double E, double rho0, double t) const;
 
  private:
-  double interpolate(const std::vector<double>& y, double xi) const;
   int d_;
   double gamma_;
   double xi0_ = 0.0;

@@ -8,9 +8,11 @@
 #include <cmath>
 #include <map>
 #include <mutex>
+#include <numbers>
 #include <tuple>
 
 #include "reference/evrard_lagrangian.hpp"
+#include "reference/interpolate.hpp"
 #include "sph/self_gravity.hpp"
 #include "verification/case.hpp"
 #include "verification/cases/extreme_hydro.hpp"
@@ -19,7 +21,7 @@
 namespace sphv {
 namespace {
 
-constexpr double pi = 3.14159265358979323846;
+constexpr double pi = std::numbers::pi;
 
 // The 1D reference, computed once per (zones, gamma, u0, t_end) in a process.
 const reference::EvrardSolution& lagrangian(int zones, double gamma, double u0, double t_end) {
@@ -69,13 +71,7 @@ struct Curves {
   }
   double total(std::size_t k) const { return kinetic[k] + thermal[k] + potential[k]; }
   // Linear interpolation in time (the SPH steps are much finer than the sample spacing).
-  double at(const std::vector<double>& c, double s) const {
-    const auto k = static_cast<std::size_t>(std::upper_bound(t.begin(), t.end(), s) - t.begin());
-    if (k == 0) return c.front();
-    if (k >= t.size()) return c.back();
-    const double w = (s - t[k - 1]) / (t[k] - t[k - 1]);
-    return (1.0 - w) * c[k - 1] + w * c[k];
-  }
+  double at(const std::vector<double>& c, double s) const { return reference::interpolate_linear(t, c, s); }
 };
 
 Result run(const Params& prm) {
