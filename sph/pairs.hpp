@@ -14,27 +14,12 @@ inline constexpr std::size_t parallel_threshold = 4096;
 // Symmetric smoothing length of a pair (errata, 9.4.4): h_ij = (h_i + h_j) / 2.
 inline double h_ij(double hi, double hj) { return 0.5 * (hi + hj); }
 
-// Calls f(i, j, r_ij, |r_ij|, h_ij) for every interacting pair, r_ij = r_i - r_j at the
-// nearest image. Each i is handled by one thread and f may only write to i's own outputs,
-// so the result is independent of the thread count.
-template <int D, class F>
-void for_each_pair(const std::vector<Vec<D>>& x, const std::vector<double>& h,
-                   const NeighbourList& nl, const Box<D>& box, F&& f) {
-  const Vec<D> L = box.length(), wrap = box.wrap_factor();
-  const std::size_t n = x.size();
-#pragma omp parallel for schedule(dynamic, 256) if (n >= parallel_threshold)
-  for (std::size_t k = 0; k < n; ++k) {
-    const std::size_t i = nl.visit(k);
-    for (int j : nl.of(i)) {
-      const Vec<D> rij = min_image<D>(x[i] - x[j], L, wrap);
-      f(i, j, rij, rij.norm(), h_ij(h[i], h[j]));
-    }
-  }
-}
-
-// The same loop summing into a per-particle accumulator: f(acc, i, j, r_ij, |r_ij|, h_ij) adds
+// The pair loop: for every particle i (in the list's visiting order) and every listed j,
+// f(acc, i, j, r_ij, |r_ij|, h_ij) with r_ij = r_i - r_j at the nearest image adds
 // pair j's share to acc (a local, so the sum stays in registers and no store inside the loop can
 // alias the particle data the next pair reads), then store(i, acc) writes i's outputs once.
+// Each i is handled by one thread and writes only i's outputs, so the result is independent of
+// the thread count.
 template <int D, class Acc, class F, class Store>
 void sum_over_pairs(const std::vector<Vec<D>>& x, const std::vector<double>& h, const NeighbourList& nl,
                     const Box<D>& box, F&& f, Store&& store) {
@@ -52,6 +37,18 @@ void sum_over_pairs(const std::vector<Vec<D>>& x, const std::vector<double>& h, 
     }
     store(i, acc);
   }
+}
+
+// Calls f(i, j, r_ij, |r_ij|, h_ij) for every interacting pair; f may only write to i's own
+// outputs (the pair loop above without an accumulator).
+template <int D, class F>
+void for_each_pair(const std::vector<Vec<D>>& x, const std::vector<double>& h, const NeighbourList& nl,
+                   const Box<D>& box, F&& f) {
+  struct None {};
+  sum_over_pairs<D, None>(
+      x, h, nl, box,
+      [&](None&, std::size_t i, int j, const Vec<D>& rij, double r, double hij) { f(i, j, rij, r, hij); },
+      [](std::size_t, const None&) {});
 }
 
 }  // namespace sph

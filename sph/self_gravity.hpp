@@ -1,5 +1,6 @@
 #pragma once
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 #include "sph/gravity_tree.hpp"
@@ -19,9 +20,9 @@ struct SelfGravity {
   std::vector<double> phi;  // phi_i of the last evaluation (particles' current positions)
 
   void finish(const Particles<3>& p, const Neighbourhood<3>&, Derivatives<3>& d) {
-    const GravityField f = tree_gravity(build_tree<3>(p.x, p.m), p.x, p.m, options);
+    GravityField f = tree_gravity(build_tree<3>(p.x, p.m), p.x, p.m, options);
     for (std::size_t i = 0; i < p.size(); ++i) d.dvdt[i] += f.a[i];
-    phi = f.phi;
+    phi = std::move(f.phi);
   }
 
   // W = 1/2 sum_i m_i phi_i (each pair counted once).

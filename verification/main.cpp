@@ -170,26 +170,14 @@ int run_main(int argc, char** argv) {
   add_gravity_command(app);
   add_bench_command(app);
 
+  const bool root = mpi::rank() == 0;
+  // One set of handlers for the parse (bench and gravity run inside it, as callbacks) and for
+  // the commands after it: every error ends as one line and a non-zero exit.
   try {
     app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    std::fprintf(stderr, "sphv: error: %s\n", e.what());
-    return 2;
-  } catch (const InputError& e) {  // from commands that run inside the parse (bench, gravity)
-    std::fprintf(stderr, "sphv: error: %s\n", e.what());
-    return 2;
-  } catch (const std::exception& e) {  // e.g. an output path that cannot be written
-    std::fprintf(stderr, "sphv: error: %s\n", e.what());
-    return 3;
-  }
-  if (threads > 0) omp_set_num_threads(threads);
-  opt.exe = fs::canonical("/proc/self/exe");
-  opt.progress = true;
-  const bool root = mpi::rank() == 0;
-
-  try {
+    if (threads > 0) omp_set_num_threads(threads);
+    opt.exe = fs::canonical("/proc/self/exe");
+    opt.progress = true;
     if (*list) list_cases();
     if (*info_cmd) info(find_case(case_name));
     if (*run) {
@@ -221,10 +209,15 @@ int run_main(int argc, char** argv) {
       return verify(out.empty() ? fs::path("runs/verify") : out, only, opt);
     }
     if (*baseline_up) return root ? baseline_update(only, {}) : 0;
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    if (root) std::fprintf(stderr, "sphv: error: %s\n", e.what());
+    return 2;
   } catch (const InputError& e) {
     if (root) std::fprintf(stderr, "sphv: error: %s\n", e.what());
     return 2;
-  } catch (const std::exception& e) {
+  } catch (const std::exception& e) {  // e.g. an output path that cannot be written
     if (root) std::fprintf(stderr, "sphv: error: %s\n", e.what());
     return 3;
   }

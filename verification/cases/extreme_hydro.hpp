@@ -45,7 +45,7 @@ inline std::vector<ParamSpec> method_params(double gamma, double hfact) {
   std::vector<ParamSpec> ps = {
       real_param("gamma", gamma, "adiabatic index", 1.0),
       real_param("hfact", hfact, "support radius / particle spacing, fixes the neighbour number (50)", 0.0),
-      choice_param("energy", "38", "energy form paired with Euler (23): (38) or (41)", {"38", "41"}),
+      choice_param("energy", "38", "energy form paired with Euler (23)", {"37", "38", "40", "41", "42"}),
       choice_param("hmode", "iterate50", "smoothing length: (50) iterated with the density, (53), or fixed",
                    {"iterate50", "rate53", "fixed"}),
       real_param("alpha", 1.0, "artificial viscosity alpha (45)", -1e-300),
