@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# The main job: install what is missing, build, run the default catalogue (sphv verify),
+# The main job: install what is missing, build, run the standard tier of the catalogue
+# (sphv verify --tier standard; JUnit XML in runs/verify/junit.xml),
 # write the report to reports/verify/index.html. Exits non-zero when a gate fails; the
 # report is written either way.
 set -uo pipefail
@@ -7,7 +8,7 @@ cd "$(dirname "$0")/.."
 bash scripts/build.sh || exit 1
 python=$(bash scripts/find-python.sh) || exit 1
 rm -rf runs/verify.new
-./build/sphv verify --out runs/verify.new "$@"
+./build/sphv verify --tier standard --out runs/verify.new "$@"
 status=$?
 [ -d runs/verify.new ] && rm -rf runs/verify && mv runs/verify.new runs/verify
 "$python" scripts/report.py runs/verify --name verify || exit 1

@@ -3,6 +3,9 @@
 
 #include <CLI/CLI.hpp>
 #include <cmath>
+#include <csignal>
+#include <cstdlib>
+#include <optional>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -13,7 +16,9 @@
 #include "verification/case.hpp"
 #include "verification/baseline.hpp"
 #include "verification/bench.hpp"
+#include "verification/cost.hpp"
 #include "verification/gravity_command.hpp"
+#include "verification/junit.hpp"
 #include "verification/mpi.hpp"
 #include "verification/sweep.hpp"
 
@@ -79,6 +84,23 @@ std::string summary_line(const Result& r) {
   return s + ", verdict: " + r.verdict;
 }
 
+// Test-only hook (verification/tiers_tests.cmake, scripts/test-faults.sh): with
+// SPHV_TEST_FAULT=crash:CASE@N,hang:CASE@N (any of them; "@N" only at level n = N) `sphv run CASE`
+// kills itself with SIGKILL or hangs, so a test can show the catalogue survives both. Nothing
+// else sets this variable.
+void test_fault(const Case& c, const Params& p) {
+  const char* f = std::getenv("SPHV_TEST_FAULT");
+  if (!f) return;
+  const std::string faults = std::string(",") + f + ",";
+  auto asked = [&](const std::string& what) {
+    return faults.find("," + what + ":" + c.name + ",") != std::string::npos ||
+           faults.find("," + what + ":" + c.name + "@" + std::to_string(p.integer("n")) + ",") != std::string::npos;
+  };
+  if (asked("crash")) std::raise(SIGKILL);
+  if (asked("hang"))
+    for (;;) pause();
+}
+
 // Exit status of a judged command: 0 when every gate passes and every verdict is expected, 1 otherwise.
 int status_of(const std::vector<Sweep>& sweeps) {
   for (const Sweep& s : sweeps)
@@ -128,22 +150,26 @@ std::vector<const Case*> gated(const std::vector<std::string>& only) {
   return out;
 }
 
-int verify(const fs::path& out, const std::vector<std::string>& only, Tier tier, const RunOptions& opt) {
-  const auto cases = gated(only);
+// Every point of every gated case and variant at the tier, as one pool (run_plans); then one
+// row per error of each sweep, DIR/summary.json, DIR/costs.json and the JUnit XML.
+int verify(const fs::path& out, const std::vector<std::string>& only, Tier tier, const RunOptions& opt,
+           fs::path junit) {
+  std::vector<SweepPlan> plans;
+  for (const Case* c : gated(only))
+    for (auto& p : plan_sweeps(*c, tier, {}, c->variants, out / c->name)) plans.push_back(std::move(p));
+  std::vector<Sweep> all = run_plans(plans, opt);
   if (mpi::rank() == 0) print_rows_header();
-  std::vector<Sweep> all;
   nlohmann::json summary = nlohmann::json::array();
-  for (const Case* c : cases) {
-    for (Sweep& s : run_sweeps(*c, tier, {}, c->variants, out / c->name, opt)) {
-      print_rows(s);
-      const auto j = to_json(s);
-      summary.push_back({{"case", c->name}, {"variant", s.variant()}, {"tier", s.tier}, {"passed", s.passed()},
-                         {"wall_time_s", s.wall_time_s}, {"rows", j["rows"]}});
-      all.push_back(std::move(s));
-    }
+  for (const Sweep& s : all) {
+    print_rows(s);
+    const auto j = to_json(s);
+    summary.push_back({{"case", s.case_name}, {"variant", s.variant()}, {"tier", s.tier}, {"passed", s.passed()},
+                       {"wall_time_s", s.wall_time_s}, {"rows", j["rows"]}});
   }
   if (mpi::rank() != 0) return 0;
   write_atomically(out / "summary.json", summary.dump(1) + "\n");
+  write_atomically(out / "costs.json", measured_costs(plans).dump(1) + "\n");
+  write_atomically(junit.empty() ? out / "junit.xml" : junit, junit_xml(all));
   int verified = 0, no_claim = 0, fail = 0, failed_sweeps = 0;
   for (const Sweep& s : all) {
     failed_sweeps += !s.passed();
@@ -209,6 +235,11 @@ int run_main(int argc, char** argv) {
   verify_cmd->add_option("--cases", only, "only these cases")->delimiter(',');
   verify_cmd->add_option("--tier", tier_name, "quick (CI-sized, the Catch2 gates) | standard | full (default standard)");
   verify_cmd->add_flag("--force", opt.force, "rerun points that already have a result of this code version");
+  std::optional<double> timeout;
+  verify_cmd->add_option("--timeout", timeout, "seconds a point may run before it is killed (0: no limit; default: "
+                         "quick 120, standard 600, full none)")->check(CLI::NonNegativeNumber);
+  fs::path junit;
+  verify_cmd->add_option("--junit", junit, "JUnit XML file, a test case per gate check (default DIR/junit.xml)");
 
   auto* baseline = app.add_subcommand("baseline", "drift baselines (own earlier output, not verification)");
   auto* baseline_up = baseline->add_subcommand("update", "rewrite the drift baselines from quick-tier sweeps");
@@ -232,6 +263,7 @@ int run_main(int argc, char** argv) {
     if (*run) {
       const Case& c = find_case(case_name);
       const Params p = c.parse(settings);
+      test_fault(c, p);
       const Result r = run_case(c, p);
       write_result(r, out.empty() ? fs::path("runs") / c.name : out);
       std::printf("%s\n", summary_line(r).c_str());
@@ -254,9 +286,11 @@ int run_main(int argc, char** argv) {
       return status_of(sweeps);
     }
     if (*verify_cmd) {
-      opt.jobs = 1;  // each point uses every core through OpenMP
-      opt.progress = false;
-      return verify(out.empty() ? fs::path("runs/verify") : out, only, tier, opt);
+      // A process per point, the cores filled (run_points); under mpirun each rank runs its points in-process.
+      opt.isolate = true;
+      opt.announce = tier == Tier::full;
+      opt.timeout_s = timeout ? *timeout : tier == Tier::quick ? 120.0 : tier == Tier::standard ? 600.0 : 0.0;
+      return verify(out.empty() ? fs::path("runs/verify") : out, only, tier, opt, junit);
     }
     if (*baseline_up) return root ? baseline_update(only, {}) : 0;
   } catch (const CLI::CallForHelp& e) {

@@ -210,29 +210,48 @@ std::vector<std::vector<std::string>> expand_variants(const std::vector<std::str
   return out;
 }
 
-std::vector<Sweep> run_sweeps(const Case& c, Tier t, const std::vector<long>& levels,
-                              const std::vector<std::vector<std::string>>& variants,
-                              const std::filesystem::path& out, const RunOptions& opt) {
-  std::vector<Point> points;
-  std::vector<std::vector<long>> lv;
-  std::vector<std::filesystem::path> dirs;
+std::vector<SweepPlan> plan_sweeps(const Case& c, Tier t, const std::vector<long>& levels,
+                                   const std::vector<std::vector<std::string>>& variants,
+                                   const std::filesystem::path& out) {
+  std::vector<SweepPlan> plans;
   for (const auto& v : variants) {
-    lv.push_back(levels.empty() ? c.tier_levels(v, t) : levels);
     const Sweep label{.settings = c.parse(v).non_defaults()};
-    dirs.push_back(variants.size() == 1 ? out : out / label.variant());
-    for (long n : lv.back()) points.push_back({v, n, dirs.back() / ("n" + std::to_string(n))});
+    plans.push_back({&c, v, levels.empty() ? c.tier_levels(v, t) : levels,
+                     variants.size() == 1 ? out : out / label.variant(), levels.empty() ? to_string(t) : ""});
   }
-  std::vector<Result> results = run_points(c, points, opt);
+  return plans;
+}
+
+std::vector<Sweep> run_plans(const std::vector<SweepPlan>& plans, const RunOptions& opt) {
+  // Progress reports each case of a catalogue, or each point of a single case's sweeps.
+  const bool one_case = std::all_of(plans.begin(), plans.end(), [&](const SweepPlan& p) { return p.c == plans[0].c; });
+  std::vector<Task> tasks;
+  for (const auto& p : plans)
+    for (long n : p.levels) {
+      std::string group = p.c->name;
+      if (one_case) {
+        group += " n=" + std::to_string(n);
+        for (const auto& s : p.settings) group += " " + s;
+      }
+      tasks.push_back({p.c, {p.settings, n, p.dir / ("n" + std::to_string(n))}, group});
+    }
+  std::vector<Result> results = run_points(tasks, opt);
   std::vector<Sweep> sweeps;
   if (results.empty()) return sweeps;  // an MPI rank other than 0
   auto it = results.begin();
-  for (std::size_t k = 0; k < variants.size(); ++k) {
-    std::vector<Result> runs(it, it + lv[k].size());
-    it += lv[k].size();
-    sweeps.push_back(summarise(c, variants[k], lv[k], std::move(runs), levels.empty() ? to_string(t) : ""));
-    write_atomically(dirs[k] / "sweep.json", to_json(sweeps.back()).dump(1) + "\n");
+  for (const auto& p : plans) {
+    std::vector<Result> runs(it, it + p.levels.size());
+    it += p.levels.size();
+    sweeps.push_back(summarise(*p.c, p.settings, p.levels, std::move(runs), p.tier));
+    write_atomically(p.dir / "sweep.json", to_json(sweeps.back()).dump(1) + "\n");
   }
   return sweeps;
+}
+
+std::vector<Sweep> run_sweeps(const Case& c, Tier t, const std::vector<long>& levels,
+                              const std::vector<std::vector<std::string>>& variants,
+                              const std::filesystem::path& out, const RunOptions& opt) {
+  return run_plans(plan_sweeps(c, t, levels, variants, out), opt);
 }
 
 nlohmann::json to_json(const Sweep& s) {

@@ -77,9 +77,24 @@ Sweep run_tier(const Case& c, Tier t, const std::vector<std::string>& settings,
 std::vector<std::vector<std::string>> expand_variants(const std::vector<std::string>& base,
                                                       const std::vector<std::string>& vary);
 
-// Runs levels x variants as one pool of points and writes out/<variant>/sweep.json per variant.
-// Levels: the tier's for each variant, or exactly the given ones when `levels` is not empty.
-// Under mpirun only rank 0 returns sweeps.
+// A sweep before it runs: its case, variant, levels, folder and tier label.
+struct SweepPlan {
+  const Case* c;
+  std::vector<std::string> settings;
+  std::vector<long> levels;
+  std::filesystem::path dir;
+  std::string tier;  // "" for levels given by hand
+};
+
+// The sweeps of levels x variants, out/<variant>/ each (out itself with one variant). Levels:
+// the tier's for each variant, or exactly the given ones when `levels` is not empty.
+std::vector<SweepPlan> plan_sweeps(const Case& c, Tier t, const std::vector<long>& levels,
+                                   const std::vector<std::vector<std::string>>& variants,
+                                   const std::filesystem::path& out);
+// Runs every point of the plans as one pool (run_points: longest first, a process per point)
+// and writes dir/sweep.json per plan. Under mpirun only rank 0 returns sweeps.
+std::vector<Sweep> run_plans(const std::vector<SweepPlan>& plans, const RunOptions& opt);
+// plan_sweeps then run_plans: one case's levels x variants.
 std::vector<Sweep> run_sweeps(const Case& c, Tier t, const std::vector<long>& levels,
                               const std::vector<std::vector<std::string>>& variants,
                               const std::filesystem::path& out, const RunOptions& opt);
