@@ -157,7 +157,13 @@ Sweep summarise(const Case& c, const std::vector<std::string>& settings, const s
     if (v.size() == n.size())
       if (auto g = grid_convergence_index(n, v, claim == s.claims.end() ? nan : claim->second.expected)) s.gci[k] = *g;
   }
-  if (c.gates) s.checks = c.gates(s);
+  // A run that crashed or timed out lacks its errors: gates that cannot be evaluated fail the sweep
+  // (the verdict check below names the run) instead of ending a whole catalogue.
+  try {
+    if (c.gates) s.checks = c.gates(s);
+  } catch (const std::exception& e) {
+    s.checks = {{"gates_evaluated", 0.0, 1.0, 1.0, std::string("the gates could not be evaluated: ") + e.what()}};
+  }
   for (auto& o : order_checks(s)) s.checks.push_back(std::move(o));
   for (std::size_t k = 0; k < s.runs.size(); ++k)
     if (!c.verdict_expected(base, s.runs[k].verdict))
