@@ -15,7 +15,9 @@ import html
 import os
 import shutil
 import sys
+from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
+from urllib.parse import quote
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import report_figures as figs  # noqa: E402
@@ -44,6 +46,13 @@ def page(title, body):
 
 def outcome_cell(outcome):
     return f"<td class='{CLS.get(outcome, 'fail')}'>{e(outcome)}</td>"
+
+
+def order_cell(row):
+    """The observed order; greyed where no order is claimed (shown for information, not judged)."""
+    if num(row.get("expected")):
+        return f"<td class='num'>{e(order_text(row))}</td>"
+    return f"<td class='num drift' title='no order claimed: the fit is shown for information only'>{e(order_text(row))}</td>"
 
 
 def case_page_name(case):
@@ -119,7 +128,7 @@ def summary_table(sweeps, missing):
                 if k == 0 and wide:
                     reason += "; sweep-wide failed: " + ", ".join(wide)
                 t.append(f"<tr{first}>{head}<td>{e(row['error'])}</td><td class='num'>{s['levels'][-1] if s['levels'] else '–'}</td>"
-                         f"<td class='num'>{fmt(row.get('fine_value'))}</td><td class='num'>{e(order_text(row))}</td>"
+                         f"<td class='num'>{fmt(row.get('fine_value'))}</td>{order_cell(row)}"
                          f"<td class='num'>{e(expected_text(row))}</td>{outcome_cell(row['outcome'])}"
                          f"<td class='why'>{e(reason)}</td>{tail}</tr>")
     for m in missing:
@@ -176,7 +185,7 @@ def check_rows(s, checks):
 
 
 def figure_html(out, stem, caption):
-    png, pdf = stem.with_suffix(".png").relative_to(out).as_posix(), stem.with_suffix(".pdf").relative_to(out).as_posix()
+    png, pdf = (quote(stem.with_suffix(x).relative_to(out).as_posix()) for x in (".png", ".pdf"))
     return (f"<figure><a href='{e(png)}'><img src='{e(png)}' alt='{e(caption)}'></a>"
             f"<figcaption>{e(caption)} (<a href='{e(pdf)}'>PDF</a>)</figcaption></figure>")
 
@@ -199,7 +208,7 @@ def case_page(case, ss, results, out, made):
         for k, row in enumerate(s["rows"]):
             body.append(f"<tr{' class=first' if k == 0 else ''}><td>{e(s['variant']) if k == 0 else ''}</td><td>{e(row['error'])}</td>"
                         f"<td>{e(', '.join(map(str, s['levels'])))}</td><td class='num'>{fmt(row.get('fine_value'))}</td>"
-                        f"<td class='num'>{e(order_text(row))}</td><td class='num'>{e(expected_text(row))}</td>{outcome_cell(row['outcome'])}"
+                        f"{order_cell(row)}<td class='num'>{e(expected_text(row))}</td>{outcome_cell(row['outcome'])}"
                         f"<td class='why'>{e(row_reason(s, row))}<br>{e(row.get('why', '')) if row['outcome'] != 'no order claimed' else ''}</td></tr>")
     body.append("</table>")
 
@@ -260,11 +269,18 @@ def case_page(case, ss, results, out, made):
     for s in ss:
         links = point_files(results, out, s)
         for n, run, have in zip(s["levels"], s["runs"], links):
-            files = " ".join(f"<a href='{e(rel)}'>{e(name)}</a>" for name, rel in have) or "(not kept)"
+            files = " ".join(f"<a href='{e(quote(rel))}'>{e(name)}</a>" for name, rel in have) or "(not kept)"
             body.append(f"<tr><td>{e(s['variant'])}</td><td class='num'>{n}</td><td class='num'>{run.get('n_particles', '–')}</td>"
                         f"<td class='num'>{fmt(run.get('wall_time_s'), '.3g')}</td><td>{e(run.get('verdict', ''))}</td><td>{files}</td></tr>")
     body.append("</table>")
     return page(f"sphv: {case}", "".join(body))
+
+
+def write_case_page(job):
+    case, ss, results, out = job
+    made = []
+    (out / case_page_name(case)).write_text(case_page(case, ss, results, out, made))
+    return made
 
 
 def mutants_page(km):
@@ -318,8 +334,10 @@ def main():
     out.mkdir(parents=True, exist_ok=True)
 
     made = []
-    for case, ss in sorted(sweeps.items()):
-        (out / case_page_name(case)).write_text(case_page(case, ss, a.results, out, made))
+    jobs = [(case, ss, a.results, out) for case, ss in sorted(sweeps.items())]
+    with ProcessPoolExecutor(max_workers=max(1, min(len(jobs), os.cpu_count() or 1))) as pool:  # figures dominate
+        for m in pool.map(write_case_page, jobs):
+            made += m
     km_file = a.mutants or ROOT / "runs" / "mutants" / "kill_matrix.json"
     mutants_link = None
     if a.mutants or km_file.is_file():

@@ -4,6 +4,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+import matplotlib.ticker  # noqa: E402
 import numpy as np  # noqa: E402
 
 from report_data import claim, num, series, wrap  # noqa: E402
@@ -50,6 +51,8 @@ def convergence(case, s, row, stem):
     ax.loglog(n, guide(q), "--", color="C3", lw=1, label=f"expected order {q:g} ± {band:g} (through the finest point)")
     if band > 0:
         ax.fill_between(n, guide(q - band), guide(q + band), color="C3", alpha=0.12, lw=0)
+    ax.set_xticks(n, [f"{v:g}" for v in n])  # the levels themselves, not powers of ten
+    ax.xaxis.set_minor_formatter(matplotlib.ticker.NullFormatter())
     ax.set_xlabel(n_label(s))
     ax.set_ylabel(error_label(s, e))
     ax.set_title(f"{case} [{s['variant']}]: {e} against n ({row['outcome']})")
