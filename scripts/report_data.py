@@ -81,6 +81,8 @@ def row_reason(s, row):
     e = row["error"]
     bad = [c["name"] for c in checks_on(s, e) if not c["pass"]]
     if row["outcome"] == "fail":
+        if row.get("why"):  # the harness's own reason ("failed: ...", "no bound", ...)
+            return row["why"]
         if bad:
             return "failed: " + ", ".join(bad)
         if e not in s.get("claims", {}):

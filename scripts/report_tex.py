@@ -45,9 +45,11 @@ def tex(text):
 
 
 def order_tex(row):
+    """Observed order +- standard error; in parentheses where no order is claimed (information only)."""
     if not num(row.get("observed")):
         return "--"
-    return f"${row['observed']:.2f} \\pm {row['se']:.2f}$" if num(row.get("se")) else f"${row['observed']:.2f}$ (2 levels)"
+    p = f"${row['observed']:.2f} \\pm {row['se']:.2f}$" if num(row.get("se")) else f"${row['observed']:.2f}$ (2 levels)"
+    return p if num(row.get("expected")) else f"({p})"
 
 
 def expected_tex(row):
