@@ -30,7 +30,7 @@ table{border-collapse:collapse;margin:8px 0}td,th{border:1px solid #ccc;padding:
 th{background:#f2f2f2;text-align:left}td.num{text-align:right;white-space:nowrap}tr.first td{border-top:2px solid #888}
 .verified{color:#060}.noclaim{color:#845b00}.fail{color:#b00;font-weight:bold}.drift{color:#666}
 .counts span{display:inline-block;margin-right:18px;font-size:18px}.why{font-size:12px;color:#333;max-width:420px}
-figure{display:inline-block;margin:6px;vertical-align:top;max-width:600px}figcaption{font-size:12px}
+div.figs{display:flex;flex-wrap:wrap;gap:8px}figure{margin:0;width:600px}figcaption{font-size:12px}
 img{max-width:100%;border:1px solid #ddd}.prov{font-size:12px;color:#333}p.claim{font-size:15px;background:#f6f8fa;padding:8px}"""
 CLS = {"verified": "verified", "no order claimed": "noclaim", "fail": "fail"}
 
@@ -175,6 +175,12 @@ def claim_sentence(case, ss):
     return f"<p class='claim'>{text}</p>"
 
 
+def claim_why(s, row):
+    """The case's reason for its order claim, under the outcome's reason (not repeated)."""
+    why = s.get("claims", {}).get(row["error"], {}).get("why", "")
+    return f"<br><i>claim:</i> {e(why)}" if why and why != row_reason(s, row) else ""
+
+
 def check_rows(s, checks):
     return "".join(
         f"<tr><td>{e(c['name'])}</td><td>{e(c.get('error') or '(whole sweep)')}</td>"
@@ -209,7 +215,7 @@ def case_page(case, ss, results, out, made):
             body.append(f"<tr{' class=first' if k == 0 else ''}><td>{e(s['variant']) if k == 0 else ''}</td><td>{e(row['error'])}</td>"
                         f"<td>{e(', '.join(map(str, s['levels'])))}</td><td class='num'>{fmt(row.get('fine_value'))}</td>"
                         f"{order_cell(row)}<td class='num'>{e(expected_text(row))}</td>{outcome_cell(row['outcome'])}"
-                        f"<td class='why'>{e(row_reason(s, row))}<br>{e(row.get('why', '')) if row['outcome'] != 'no order claimed' else ''}</td></tr>")
+                        f"<td class='why'>{e(row_reason(s, row))}{claim_why(s, row)}</td></tr>")
     body.append("</table>")
 
     body.append("<h2>Every check</h2><p><b>verification</b>: against an independent reference (analytic solution, exact "
@@ -235,34 +241,36 @@ def case_page(case, ss, results, out, made):
     body.append("<h2>Figures</h2><p>Convergence figures only for errors with an order claim; errors without one are "
                 "tabulated per level. Each figure links its vector PDF.</p>")
     claimed = [n for n in dict.fromkeys(r["error"] for s in ss for r in s["rows"] if num(r.get("expected")))]
+    walls = []
     for err in claimed:
         stem = figs.wall_time(case, ss, err, figdir / f"wall_{slug(err)}")
         if stem:
             made.append((case, None, err, "wall", stem))
-            body.append(figure_html(out, stem, f"{err} against the wall time of each run, every variant"))
+            walls.append(figure_html(out, stem, f"{err} against the wall time of each run, every variant"))
+    if walls:
+        body.append("<h3>Error against run time</h3><div class='figs'>" + "".join(walls) + "</div>")
     for s in ss:
         v = slug(s["variant"])
-        body.append(f"<h3>{e(s['variant'])}</h3>")
+        body.append(f"<h3>{e(s['variant'])}</h3><div class='figs'>")
         for row in s["rows"]:
             stem = figs.convergence(case, s, row, figdir / f"{v}_{slug(row['error'])}_convergence") if num(row.get("expected")) else None
             if stem:
                 made.append((case, s, row["error"], "convergence", stem))
                 body.append(figure_html(out, stem, f"{row['error']} against n, {s['variant']}: {row['outcome']}"))
-        unclaimed = [err for err in errors_of(s) if err not in claimed or not any(
-            r["error"] == err and num(r.get("expected")) for r in s["rows"])]
+        if s["runs"]:
+            for f in s["runs"][-1].get("figures", []):
+                stem = figs.run_figure(f, f" [{s['variant']}, n = {s['levels'][-1]}]", figdir / f"{v}_run_{slug(f['name'])}")
+                if stem:
+                    made.append((case, s, f["name"], "run", stem))
+                    body.append(figure_html(out, stem, f"{f['title']} (finest run, n = {s['levels'][-1]})"))
+        body.append("</div>")
+        unclaimed = [err for err in errors_of(s) if not any(r["error"] == err and num(r.get("expected")) for r in s["rows"])]
         if unclaimed:
             body.append("<table><tr><th>error (no order claimed)</th>" + "".join(f"<th>n = {n}</th>" for n in s["levels"]) + "</tr>")
             for err in unclaimed:
                 body.append(f"<tr><td>{e(err)}</td>" + "".join(f"<td class='num'>{fmt(r.get('errors', {}).get(err), '.3e')}</td>"
                                                             for r in s["runs"]) + "</tr>")
             body.append("</table>")
-        if s["runs"]:
-            finest = s["runs"][-1]
-            for f in finest.get("figures", []):
-                stem = figs.run_figure(f, f" [{s['variant']}, n = {s['levels'][-1]}]", figdir / f"{v}_run_{slug(f['name'])}")
-                if stem:
-                    made.append((case, s, f["name"], "run", stem))
-                    body.append(figure_html(out, stem, f"{f['title']} (finest run, n = {s['levels'][-1]})"))
 
     body.append("<h2>Runs and their files</h2><table><tr><th>variant</th><th>n</th><th>particles</th><th>wall s</th>"
                 "<th>verdict</th><th>files</th></tr>")
