@@ -163,7 +163,7 @@ def claim_sentence(case, ss):
     claimed = [f"{e(r['error'])} converges at order {r['expected']:g} ± {r.get('band', 0):g}"
                for r in s["rows"] if num(r.get("expected"))]
     no_claim = [r["error"] for r in s["rows"] if not num(r.get("expected"))]
-    text = f"<b>{e(case)}</b> verifies {e(s.get('summary', ''))}. "
+    text = f"<b>{e(case)}</b>: {e(s.get('summary', ''))}. "
     if claimed:
         text += f"Claim ({e(s['variant'])} variant): " + ", ".join(claimed) + f" in n ({e(s.get('n_counts', ''))}), each under its bound"
         text += f"; no order claimed for {e(', '.join(no_claim))}." if no_claim else "."
