@@ -8,7 +8,7 @@ moved as a whole.
 
 usage: report.py RESULTS_DIR [--name NAME] [--reports DIR] [--mutants FILE] [--bundle DIR [--allow-dirty]]
 RESULTS_DIR holds summary.json and CASE/[VARIANT/]sweep.json as `sphv verify --out` writes them,
-or the sweep.json files of `sphv sweep`. --bundle also writes a publication bundle
+or the sweep.json files of `sphv sweep`, or bench.json of `sphv bench` (a benchmark page). --bundle also writes a publication bundle
 (verification.tex, verification-supplement.tex, figures, provenance.json, reproduce.sh)."""
 import argparse
 import html
@@ -328,13 +328,20 @@ def main():
     if not a.results.is_dir():
         print(f"report.py: error: {a.results} is not a directory", file=sys.stderr)
         sys.exit(2)
+    out = a.reports / a.name
+    if (a.results / "bench.json").is_file() and not any(a.results.glob("**/sweep.json")):  # scripts/bench.sh
+        import report_bench
+        shutil.rmtree(out / "fig", ignore_errors=True)
+        out.mkdir(parents=True, exist_ok=True)
+        (out / "index.html").write_text(page("sphv benchmarks", report_bench.bench_body(a.results, out)))
+        print(f"report: {out / 'index.html'} (benchmarks)")
+        return
     sweeps, missing, tier = load(a.results)
     dirty = sum(is_dirty(p) for p in provenances(sweeps))
     if a.bundle and dirty and not a.allow_dirty:
         print(f"report.py: error: {dirty} of {len(provenances(sweeps))} runs under {a.results} were produced from a tree "
               "with uncommitted changes (their provenance says so): commit, rerun, or pass --allow-dirty", file=sys.stderr)
         sys.exit(2)
-    out = a.reports / a.name
     for old in ("fig", "data"):  # a report is rewritten whole: nothing stale from an earlier one
         shutil.rmtree(out / old, ignore_errors=True)
     for old in out.glob("*.html"):

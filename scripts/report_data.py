@@ -140,7 +140,9 @@ def provenances(sweeps):
 
 def is_dirty(prov):
     """A result produced by a tree with uncommitted changes (any of the spellings provenance uses)."""
-    return bool(prov.get("dirty") or prov.get("git_dirty")) or str(prov.get("git_commit", "")).endswith("-dirty")
+    tree = prov.get("source_tree")
+    return (bool(tree.get("dirty")) if isinstance(tree, dict) else False) or bool(prov.get("dirty") or prov.get("git_dirty")) \
+        or str(prov.get("git_commit", "")).endswith("-dirty")
 
 
 def slug(text):
