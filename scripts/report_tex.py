@@ -262,8 +262,10 @@ def write_bundle(bundle, sweeps, tier, made, report_dir):
     prov["tier"] = tier
     prov["uname"] = " ".join(os.uname())
     (bundle / "provenance.json").write_text(json.dumps(prov, indent=1) + "\n")
+    commit = prov.get("git_commit")
     (bundle / "reproduce.sh").write_text(
-        "#!/usr/bin/env bash\n# Re-runs every number behind this bundle and rewrites it: run from the repository root at "
-        f"commit {prov.get('git_commit')}.\nset -e\ngit checkout {prov.get('git_commit')}\n"
+        "#!/usr/bin/env bash\n# Re-runs every number behind this bundle and rewrites it, from the repository root at "
+        f"commit {commit}.\nset -e\n[ \"$(git rev-parse HEAD)\" = \"{commit}\" ] || "
+        f"{{ echo \"reproduce.sh: check out commit {commit} first\" >&2; exit 2; }}\n"
         f"bash scripts/bundle.sh --tier {tier.split(',')[0]} --out bundle\n")
     print(f"bundle: {bundle / 'verification.tex'} and verification-supplement.tex, {len(list(figs.glob('*.pdf')))} figures")
