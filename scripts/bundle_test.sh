@@ -33,7 +33,8 @@ fi
 
 [ "$mode" = dirty ] || fail "unknown mode $mode"
 repo=$work/repo
-mkdir -p "$repo/verification" && cp -r "$root/scripts" "$repo/" && cd "$repo" || exit 1
+mkdir -p "$repo/verification" "$work/results" && cp -r "$root/scripts" "$repo/" && cd "$repo" || exit 1
+cp -r "$results/kernel" "$work/results/" && results=$work/results  # one sweep is enough here: keep it quick
 echo "int x;" > verification/a.cpp
 git init -q . && git add . && git -c user.name=t -c user.email=t@t commit -qm scratch || fail "git"
 run() { bash scripts/bundle.sh --results "$results" --out "$work/b" "$@" >"$work/out.txt" 2>&1; }
