@@ -29,7 +29,7 @@ CSS = """body{font-family:sans-serif;max-width:1250px;margin:auto;padding:0 12px
 table{border-collapse:collapse;margin:8px 0}td,th{border:1px solid #ccc;padding:2px 6px;font-size:13px;vertical-align:top}
 th{background:#f2f2f2;text-align:left}td.num{text-align:right;white-space:nowrap}tr.first td{border-top:2px solid #888}
 .verified{color:#060}.noclaim{color:#845b00}.fail{color:#b00;font-weight:bold}.drift{color:#666}
-.counts span{display:inline-block;margin-right:18px;font-size:18px}.why{font-size:12px;color:#333;max-width:420px}
+.counts span{display:inline-block;margin-right:18px;font-size:18px}.why{font-size:12px;color:#333;min-width:260px;max-width:480px}
 div.figs{display:flex;flex-wrap:wrap;gap:8px}figure{margin:0;width:600px}figcaption{font-size:12px}
 img{max-width:100%;border:1px solid #ddd}.prov{font-size:12px;color:#333}p.claim{font-size:15px;background:#f6f8fa;padding:8px}"""
 CLS = {"verified": "verified", "no order claimed": "noclaim", "fail": "fail"}
@@ -119,7 +119,6 @@ def summary_table(sweeps, missing):
                 tail = f"<td class='num'>{fmt(s.get('wall_time_s'), '.2f')}</td>" if k == 0 else "<td></td>"
                 first = " class='first'" if k == 0 else ""
                 if row is None:
-                    verdict = "fail" if not s["passed"] else "no errors"
                     t.append(f"<tr{first}>{head}<td colspan=5>no error rows (checks only)</td>"
                              f"<td class='{'fail' if not s['passed'] else ''}'>{'fail' if not s['passed'] else 'pass'}</td>"
                              f"<td class='why'>{e('failed: ' + ', '.join(wide)) if wide else ''}</td>{tail}</tr>")
@@ -206,7 +205,8 @@ def case_page(case, ss, results, out, made):
     if defs:
         body.append("<table><tr><th>error</th><th>definition</th></tr>" +
                     "".join(f"<tr><td>{e(k)}</td><td>{e(v)}</td></tr>" for k, v in defs.items()) + "</table>")
-    body.append(f"<p>n: {e(ss[0].get('n_counts', ''))}. Tier: {e(ss[0].get('tier', 'not recorded'))}.</p>")
+    tier = ss[0].get("tier") or "none (levels given on the command line)"
+    body.append(f"<p>n: {e(ss[0].get('n_counts', ''))}. Tier: {e(tier)}.</p>")
 
     body.append("<h2>Outcome per error</h2><table><tr><th>variant</th><th>error</th><th>levels n</th><th>error at finest n</th>"
                 "<th>observed ± s.e.</th><th>expected ± band</th><th>outcome</th><th>why / what it rests on</th></tr>")

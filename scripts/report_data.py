@@ -58,18 +58,23 @@ def fmt(v, spec=".3g", none="–"):
     return format(v, spec) if num(v) else none
 
 
+def f2(v):
+    """Two decimals, without a negative zero."""
+    return f"{v:.2f}".replace("-0.00", "0.00")
+
+
 def order_text(row):
     """Observed order as 'p ± se' (the standard error of the least-squares fit)."""
     if not num(row.get("observed")):
         return "–"
     se = row.get("se")
-    return f"{row['observed']:.2f} ± {se:.2f}" if num(se) else f"{row['observed']:.2f} (no s.e.: 2 levels)"
+    return f"{f2(row['observed'])} ± {f2(se)}" if num(se) else f"{f2(row['observed'])} (no s.e.: 2 levels)"
 
 
 def expected_text(row):
     if not num(row.get("expected")):
         return "none"
-    return f"{row['expected']:g} ± {row.get('band', 0):g}"
+    return f"{row['expected']:.3g} ± {row.get('band', 0):.3g}"
 
 
 def checks_on(s, error):

@@ -10,7 +10,7 @@ import shutil
 import unicodedata
 from pathlib import Path
 
-from report_data import errors_of, fmt, is_dirty, num, provenances, row_reason, slug, sweep_wide_failures
+from report_data import f2, fmt, is_dirty, num, provenances, row_reason, slug, sweep_wide_failures
 
 FAIL = r"\textbf{FAIL}"
 TABLE_ROWS = 38  # rows per tabular: a float taller than a page cannot be placed (footnotesize, a4/letter)
@@ -48,12 +48,12 @@ def order_tex(row):
     """Observed order +- standard error; in parentheses where no order is claimed (information only)."""
     if not num(row.get("observed")):
         return "--"
-    p = f"${row['observed']:.2f} \\pm {row['se']:.2f}$" if num(row.get("se")) else f"${row['observed']:.2f}$ (2 levels)"
+    p = f"${f2(row['observed'])} \\pm {f2(row['se'])}$" if num(row.get("se")) else f"${f2(row['observed'])}$ (2 levels)"
     return p if num(row.get("expected")) else f"({p})"
 
 
 def expected_tex(row):
-    return f"${row['expected']:g} \\pm {row.get('band', 0):g}$" if num(row.get("expected")) else "none"
+    return f"${row['expected']:.3g} \\pm {row.get('band', 0):.3g}$" if num(row.get("expected")) else "none"
 
 
 def outcome_tex(row):
