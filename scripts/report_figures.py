@@ -65,14 +65,16 @@ def convergence(case, s, row, stem):
 
 
 def wall_time(case, ss, error, stem):
-    """Error against the wall time of each run, one line per variant that reports the error."""
+    """Error against the wall time of each run, one line per variant that reports the error (none
+    when no variant has two points)."""
     fig, ax = plt.subplots(figsize=(5.6, 4))
-    drawn = 0
+    drawn = longest = 0
     for k, s in enumerate(ss):
         pts = [(run.get("wall_time_s"), run.get("errors", {}).get(error), n) for n, run in zip(s["levels"], s["runs"])]
         pts = [p for p in pts if num(p[0]) and p[0] > 0 and num(p[1]) and p[1] > 0]
         if not pts:
             continue
+        longest = max(longest, len(pts))
         t, y, n = zip(*pts)
         outcome = next((r["outcome"] for r in s["rows"] if r["error"] == error), "no claim")
         ax.loglog(t, y, "o-", color=f"C{k % 10}", ms=4, lw=0.8, label=f"{s['variant']} ({outcome})")
@@ -80,7 +82,7 @@ def wall_time(case, ss, error, stem):
             for tx, ty, nx in pts:
                 ax.annotate(f"n={nx:g}", (tx, ty), textcoords="offset points", xytext=(4, 3), fontsize=6, color=f"C{k % 10}")
         drawn += 1
-    if not drawn:
+    if not drawn or longest < 2:  # one point per line says nothing about cost against accuracy
         plt.close(fig)
         return None
     ax.set_xlabel("wall time of the run [s]")
@@ -118,7 +120,7 @@ def run_figure(f, suffix, stem):
     ax.set_yscale(f["yscale"])
     ax.set_xlabel(wrap(f["xlabel"], 70))
     ax.set_ylabel(wrap(f["ylabel"], 55))
-    ax.set_title(wrap(f"{f['title']}{suffix}", 80))
+    ax.set_title(wrap(f"{f['title']}{suffix}", 62))
     if any(line.get_label() and not line.get_label().startswith("_") for line in ax.get_lines()):
         ax.legend()
     ax.grid(True, alpha=0.3)
