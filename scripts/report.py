@@ -303,7 +303,8 @@ def mutants_page(km):
             "<table><tr><th>mutant</th><th>area</th><th>fault</th><th>outcome</th><th>first failed checks (case / variant: check, kind)</th>"
             "<th>failed tests</th><th>wall s</th></tr>"]
     for m in ms:
-        state = ("killed by verification", "verified") if m.get("by_verification") else \
+        state = (f"not run: {m['error']}", "fail") if m.get("error") else \
+                ("killed by verification", "verified") if m.get("by_verification") else \
                 ("killed by drift only", "noclaim") if m.get("killed") else ("SURVIVED", "fail")
         checks = "<br>".join(f"{e(c.get('case'))} / {e(c.get('variant'))}: {e(c.get('check'))} "
                              f"<span class='{'drift' if c.get('kind') == 'drift' else ''}'>({e(c.get('kind'))})</span>"
