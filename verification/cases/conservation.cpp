@@ -93,13 +93,16 @@ Result run(const Params& p) {
 
 std::vector<Check> gates(const Sweep& s) {
   std::vector<Check> c;
+  const auto v = Check::Kind::verification;
   for (const auto& r : s.runs) {
     const std::string n = "_n" + std::to_string(r.params.value("n", 0L));
     c.push_back({"verdict" + n, r.verdict == "ok" ? 1.0 : 0.0, 1.0, 1.0, r.verdict});
     // The bound 1e-12; the proof (92)-(95) makes the drift pure round-off (measured
     // <= 1.5e-15 over 150 steps in 2D and 3D, with and without viscosity).
-    c.push_back({"momentum_symmetric" + n, r.errors.at("momentum_symmetric"), 0.0, 1e-12, "(92): pairwise forces"});
-    c.push_back({"angular_symmetric" + n, r.errors.at("angular_symmetric"), 0.0, 1e-12, "(94)-(95): central forces"});
+    c.push_back({"momentum_symmetric" + n, r.errors.at("momentum_symmetric"), 0.0, 1e-12, "(92): pairwise forces", v,
+                 "momentum_symmetric"});
+    c.push_back({"angular_symmetric" + n, r.errors.at("angular_symmetric"), 0.0, 1e-12, "(94)-(95): central forces", v,
+                 "angular_symmetric"});
     // The harness must see (22) break momentum conservation: measured >= 5e-3; 1e-6 leaves
     // a margin of 5000 and is still 1e6 above the round-off of the symmetric forms.
     c.push_back({"momentum_direct22_detected" + n, r.extra.at("momentum_direct22_min").get<double>(), 1e-6,
@@ -107,7 +110,7 @@ std::vector<Check> gates(const Sweep& s) {
     // (96) holds identically for the conserving pairs: residual is round-off of sums of O(1)
     // terms (measured <= 2e-16); the others leave a discretisation residual (measured >= 4e-3).
     c.push_back({"energy_rate_conserving" + n, r.errors.at("energy_rate_conserving"), 0.0, 1e-12,
-                 "(96)-(104): sum of m_i (v_i . a_i + du_i/dt) cancels pairwise"});
+                 "(96)-(104): sum of m_i (v_i . a_i + du_i/dt) cancels pairwise", v, "energy_rate_conserving"});
     c.push_back({"energy_rate_nonconserving_detected" + n, r.extra.at("energy_rate_nonconserving_min").get<double>(),
                  1e-6, std::numeric_limits<double>::infinity(), "unmatched pairs leave an O(h^2) residual"});
   }
