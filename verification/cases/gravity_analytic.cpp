@@ -129,15 +129,19 @@ std::vector<Check> gates(const Sweep& s) {
   // (G, masses, signs). rms in [0.7, 1.3]: 800 correlated samples; max below 5 (800 normal
   // samples exceed 5 with probability 5e-4). The tree (quadrupole, theta 0.5) is held to the same
   // test: its own error adds in quadrature to the sampling error, rms z_tree = sqrt(1 + (e_tree /
-  // se)^2) times the direct sum's. The tree's own error at the exterior probes is ~8e-4 (measured:
-  // g_out_tree^2 - g_out_direct^2 at N = 256000), below the standard error up to N ~ 2.5e5, so
-  // rms z_tree stays below ~1.15 at the tiers' levels; a tree error of a few times that fails.
+  // se)^2) times the direct sum's. Its own error at the exterior probes is ~8e-4 (measured:
+  // g_out_tree^2 - g_out_direct^2 at N = 256000), a third of the standard error at N = 64000
+  // (rms z inflated by 5 %) but 0.6 of it at 256000 (measured there: rms z_tree 1.22, max 5.4,
+  // against 0.86 and 3.3 for the direct sum). So the exterior-force z-test of the tree runs up to
+  // N = 64000; beyond it the tree's own error is no longer negligible and only its bound holds.
+  // A tree without the quadrupole term fails it at N = 64000 (measured rms 1.36, max 5.9).
   const std::pair<const char*, const char*> zs[] = {
       {"phi", "phi_direct"}, {"g_out", "g_out_direct"}, {"phi_tree", "phi_tree"}, {"g_out_tree", "g_out_tree"}};
   for (const auto& r : s.runs) {
     const std::string at = "_n" + std::to_string(r.params.value("n", 0L));
     for (const auto& [z, e] : zs) {
       if (r.extra.at("rms_z_" + std::string(z)).is_null()) continue;
+      if (std::string(z) == "g_out_tree" && r.params.value("n", 0L) > 64000) continue;
       c.push_back({"rms_z_" + std::string(z) + at, r.extra.at("rms_z_" + std::string(z)), 0.7, 1.3, "z ~ N(0, 1)", v, e});
       c.push_back({"max_z_" + std::string(z) + at, r.extra.at("max_abs_z_" + std::string(z)), 0.0, 5.0, "z ~ N(0, 1)", v, e});
     }
