@@ -75,6 +75,10 @@ Result score_snapshot(const Case& c, std::vector<std::string> settings, const Sn
       settings.push_back("dim=" + std::to_string(s.dim));
     }
   }
+  if (sc.n_per_side && !setting(settings, "n")) {
+    const long dim = has_param(c, "dim") ? Params(c.name, c.params, settings).integer("dim") : s.dim;
+    settings.push_back("n=" + std::to_string(std::lround(std::pow(double(s.size()), 1.0 / dim))));
+  }
   const Params p = c.parse(settings);
   const auto t0 = std::chrono::steady_clock::now();
   Result r = sc.score(p, s);

@@ -18,6 +18,7 @@ struct Scorer {
   std::function<Result(const Params&, const Snapshot&)> score;
   std::map<std::string, std::string> error_defs;  // error name -> exact definition (norm, region, weights)
   std::function<double(const Params&)> t_end;     // the time a run of these parameters ends at (may be empty)
+  bool n_per_side = false;  // n (unless set) from the particle count: N^(1/dim) particles per side
 };
 
 // The scorer of a case, or an InputError listing the cases that have one.

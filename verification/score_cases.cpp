@@ -153,7 +153,7 @@ const std::map<std::string, Scorer>& scorers() {
       {"sod", {"t_end", score_tube, tube_error_defs, tube_t_end}},
       {"sod2d", {"t_end", score_tube, tube_error_defs, tube_t_end}},
       {"sod3d", {"t_end", score_tube, tube_error_defs, tube_t_end}},
-      {"sedov", {"t", score_sedov, sedov::error_defs, sedov::end_time}},
+      {"sedov", {"t", score_sedov, sedov::error_defs, sedov::end_time, true}},
       {"noh", {"t_end", score_noh, noh::error_defs, real_t_end}},
       {"heat", {"t_end", score_heat, {{"spatial_gauss", heat::error_defs.at("spatial_gauss")}}, real_t_end}},
       {"gravity", {"", score_gravity, gravity_defs, {}}}};

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <fstream>
 #include <sstream>
+#include <string_view>
 
 #include "verification/params.hpp"
 #include "verification/result.hpp"
@@ -68,9 +69,9 @@ std::optional<double> comment_time(std::string_view c) {
 Snapshot read_csv_snapshot(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError("cannot read snapshot " + path.string());
-  std::stringstream buf;
-  buf << in.rdbuf();
-  const std::string text = buf.str();
+  std::string text(std::filesystem::file_size(path), '\0');
+  in.read(text.data(), text.size());
+  if (in.gcount() != static_cast<std::streamsize>(text.size())) throw InputError("cannot read snapshot " + path.string());
   const std::string f = path.string();
   if (text.find('\0') != std::string::npos)
     throw InputError(f + ": binary data, not a CSV file (an HDF5 file? it lacks the HDF5 signature)");
@@ -93,13 +94,13 @@ Snapshot read_csv_snapshot(const std::filesystem::path& path) {
       if (auto t = comment_time(line.substr(first))) s.time = t;
       continue;
     }
-    const std::string where = f + ":" + std::to_string(row);
+    auto where = [&] { return f + ":" + std::to_string(row); };
     if (names.empty()) {
       comma = line.find(',') != std::string_view::npos;
       split(line, comma, fields);
       double v;
       if (parse_number(fields[0], v))
-        throw InputError(where + ": no header row (the first row holds numbers; expected names like x,y,z,m,rho)");
+        throw InputError(where() + ": no header row (the first row holds numbers; expected names like x,y,z,m,rho)");
       for (const auto& name : fields) {
         std::string c = canonical_column(std::string(name));
         if (s.has(c)) c.clear();  // a second spelling of a column already taken
@@ -111,13 +112,13 @@ Snapshot read_csv_snapshot(const std::filesystem::path& path) {
     }
     split(line, comma, fields);
     if (fields.size() != names.size())
-      throw InputError(where + ": " + std::to_string(fields.size()) + " fields, the header has " +
+      throw InputError(where() + ": " + std::to_string(fields.size()) + " fields, the header has " +
                        std::to_string(names.size()));
     for (std::size_t k = 0; k < fields.size(); ++k) {
       if (!cols[k]) continue;
       double v;
       if (!parse_number(fields[k], v) || !std::isfinite(v))
-        throw InputError(where + ": " + (fields[k].empty() ? std::string("an empty field") : "'" + std::string(fields[k]) + "'") +
+        throw InputError(where() + ": " + (fields[k].empty() ? std::string("an empty field") : "'" + std::string(fields[k]) + "'") +
                          " in column " + s.taken_from.at(names[k]) + " is not a finite number");
       cols[k]->push_back(v);
     }

@@ -22,7 +22,8 @@ for r in runner["runs"]:
         problems.append(f"n={n}: errors {r['errors']} differ from sphv run's {by_n[n]['errors']}")
     if not r["wall_time_s"] > 0:
         problems.append(f"n={n}: no wall time")
-    if "sha256" not in r["provenance"].get("snapshot", {}):
+    level = json.loads((Path(sys.argv[1]) / f"n{n}" / "result.json").read_text())
+    if "sha256" not in level["provenance"].get("snapshot", {}):
         problems.append(f"n={n}: provenance has no snapshot SHA-256")
 for e in runner["runs"][0]["errors"]:
     p = runner["observed_order"].get(e)

@@ -89,7 +89,7 @@ TEST_CASE("score: noh 1D round trip", "[score]") { require_round_trip("noh", {"n
 TEST_CASE("score: heat 1D round trip (spatial_gauss)", "[score]") { require_round_trip("heat", {"n=16"}, {"csv"}); }
 
 TEST_CASE("score: gravity scores the code's accelerations against the direct sum", "[score]") {
-  const auto set = gravity::plummer(500, 3);
+  const auto set = gravity::plummer_sphere(500, 3);
   const auto tree = sph::build_tree<3>(set.x, set.m);
   const auto f = sph::tree_gravity(tree, set.x, set.m, {.theta = 0.7, .eps = 0.01});
   Snapshot s;
