@@ -94,7 +94,7 @@ Sweep runner_sweep(const Case& c, const std::vector<long>& levels, const std::ve
     runs.push_back(std::move(r));
   }
   Sweep s = summarise(c, settings, levels, std::move(runs));
-  std::erase_if(s.checks, [](const Check& ch) { return ch.name.rfind("drift_", 0) == 0; });
+  std::erase_if(s.checks, [](const Check& ch) { return ch.kind == Check::Kind::drift; });
   nlohmann::json j = to_json(s);
   j["runner"] = command;
   write_atomically(out / "sweep.json", j.dump(1) + "\n");

@@ -91,7 +91,10 @@ Result score_snapshot(const Case& c, std::vector<std::string> settings, const Sn
     if (s.has(k)) cols[k] = v;
   r.extra["snapshot"] = {{"format", s.format}, {"dim", s.dim}, {"columns", cols},
                          {"time", s.time ? nlohmann::json(*s.time) : nlohmann::json()}};
-  r.extra["error_defs"] = sc.error_defs;
+  nlohmann::json defs = nlohmann::json::object();  // the case's definitions (sphv info CASE)
+  for (const auto& [k, v] : r.errors)
+    if (c.error_defs.count(k)) defs[k] = c.error_defs.at(k);
+  r.extra["error_defs"] = defs;
   return r;
 }
 

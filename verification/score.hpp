@@ -16,7 +16,6 @@ namespace sphv {
 struct Scorer {
   std::string time_key;                          // the case's time parameter ("" = none)
   std::function<Result(const Params&, const Snapshot&)> score;
-  std::map<std::string, std::string> error_defs;  // error name -> exact definition (norm, region, weights)
   std::function<double(const Params&)> t_end;     // the time a run of these parameters ends at (may be empty)
   bool n_per_side = false;  // n (unless set) from the particle count: N^(1/dim) particles per side
 };

@@ -135,14 +135,6 @@ Result score_gravity(const Params& prm, const Snapshot& s) {
   return r;
 }
 
-const std::map<std::string, std::string> gravity_defs = {
-    {"force_p50", "median over particles of |a_code - a_direct| / |a_direct| (particles with a_direct = 0 left out); "
-                  "a_direct: O(N^2) direct sum, G = 1, Plummer softening eps"},
-    {"force_p90", "90th percentile (nearest rank) of the same"},
-    {"force_p99", "99th percentile (nearest rank) of the same"},
-    {"force_max", "maximum of the same"},
-    {"energy", "|W_code - W_direct| / |W_direct|, W = 1/2 sum_i m_i phi_i (when the snapshot has a potential)"}};
-
 double tube_t_end(const Params& p) { return tube_problem(p).t_end; }
 double real_t_end(const Params& p) { return p.real("t_end"); }
 
@@ -150,13 +142,13 @@ double real_t_end(const Params& p) { return p.real("t_end"); }
 
 const std::map<std::string, Scorer>& scorers() {
   static const std::map<std::string, Scorer> s = {
-      {"sod", {"t_end", score_tube, tube_error_defs, tube_t_end}},
-      {"sod2d", {"t_end", score_tube, tube_error_defs, tube_t_end}},
-      {"sod3d", {"t_end", score_tube, tube_error_defs, tube_t_end}},
-      {"sedov", {"t", score_sedov, sedov::error_defs, sedov::end_time, true}},
-      {"noh", {"t_end", score_noh, noh::error_defs, real_t_end}},
-      {"heat", {"t_end", score_heat, {{"spatial_gauss", heat::error_defs.at("spatial_gauss")}}, real_t_end}},
-      {"gravity", {"", score_gravity, gravity_defs, {}}}};
+      {"sod", {"t_end", score_tube, tube_t_end}},
+      {"sod2d", {"t_end", score_tube, tube_t_end}},
+      {"sod3d", {"t_end", score_tube, tube_t_end}},
+      {"sedov", {"t", score_sedov, sedov::end_time, true}},
+      {"noh", {"t_end", score_noh, real_t_end}},
+      {"heat", {"t_end", score_heat, real_t_end}},
+      {"gravity", {"", score_gravity, {}}}};
   return s;
 }
 
