@@ -171,6 +171,7 @@ std::map<std::string, std::string> error_defs() {
       d[key("max", m, theta)] = "max over particles of |a_tree - a_direct| / |a_direct|, " + at;
       d[key("energy", m, theta)] = "|W_tree - W_direct| / |W_direct|, W = 1/2 sum_i m_i phi_i, " + at;
     }
+  d.insert(score_error_defs.begin(), score_error_defs.end());  // sphv score of a code's own accelerations
   return d;
 }
 
