@@ -225,7 +225,10 @@ def case_page(case, ss, results, out, made):
     for s in ss:
         ver = [c for c in s["checks"] if c.get("kind", "verification") != "drift"]
         drift = [c for c in s["checks"] if c.get("kind") == "drift"]
-        body.append(f"<h3 id='{variant_anchor(s)}'>{e(s['variant'])}: {'passed' if s['passed'] else '<span class=fail>FAILED</span>'}</h3>")
+        bad_rows = [r["error"] for r in s["rows"] if r["outcome"] == "fail"]
+        status = "passed" if s["passed"] else "<span class=fail>FAILED</span>" + (
+            f" (failing errors: {e(', '.join(bad_rows))}; see the outcome table)" if bad_rows else "")
+        body.append(f"<h3 id='{variant_anchor(s)}'>{e(s['variant'])}: {status}</h3>")
         body.append(f"<table>{head}{check_rows(s, ver)}</table>" if ver else "<p>No verification check.</p>")
         if drift:
             bad = sum(not c["pass"] for c in drift)
