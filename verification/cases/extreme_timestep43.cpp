@@ -72,8 +72,10 @@ std::vector<Check> gates(const Sweep& s) {
     const double dt_courant_max = C * 0.5 * hfact / n / (std::sqrt(pr.gamma * pr.left.p / pr.left.rho) * (1.0 + 1.2 * alpha));
     c.push_back({level + "_first_dt_43", x["runs"]["chapter43"]["first_dt"].get<double>() / dt43, 1.0 - 1e-12,
                  1.0 + 1e-12, "(43)'s first step from rest is eta^2 (or t_end if shorter): round-off"});
+    // Upper end 1.01: the sound speed comes from the summation density, whose kernel-sum error at
+    // 2.4 dx in 1D is ~2e-3 (c and dt move by half that).
     c.push_back({level + "_first_dt_courant", x["runs"]["courant"]["first_dt"].get<double>() / dt_courant_max, 0.1,
-                 1.0 + 1e-12, "the Courant step is at most C (h/2) / (c (1 + 1.2 alpha)) (theory), and not 10x below"});
+                 1.01, "the Courant step is at most C (h/2) / (c (1 + 1.2 alpha)) (theory), and not 10x below"});
     // Theory: a step a few times the Courant limit already diverges; (43)'s is > 10x it here.
     c.push_back({level + "_first_dt_ratio", x["first_dt_ratio_43_over_courant"], 10.0, 1e300,
                  "(43)'s first step, as taken, far above the Courant step taken"});

@@ -168,6 +168,11 @@ OrderClaims sedov_orders(const Params& p) {
                                 "on 32..128 (measured fits 0.45-0.69, local orders rising towards 1)"}}};
 }
 
+// Cost (wall, one thread, loaded machine): 2D n = 32 ~4 s, 64 ~8 s, 128 ~60 s (steps ~ n, particles
+// ~ n^2); 256 ~ 8 min (estimated). Quick: one level (the L1 bound and the front); standard: the
+// order on three levels; full adds 256.
+const Levels levels = {.quick = {32}, .standard = {32, 64, 128}, .full = {32, 64, 128, 256}};
+
 const Registration reg{Case{
     .name = "sedov",
     .summary = "Sedov-Taylor blast (2D/3D): shock radius and density profile against the similarity solution",
