@@ -142,6 +142,7 @@ const Registration reg{Case{
     .gate_levels = {256},
     .expected_order = [](const Params&) { return std::map<std::string, double>{{"time_euler_at_bound", 2.0}}; },
     .expected_why = "Euler O(dt) at dt = 0.95 * 2 / lambda_max ~ dx^2: O(n^-2)",
+    .validate = validate,
     .run = run,
     .gates = gates,
 }};
