@@ -126,10 +126,26 @@ int baseline_update(const std::vector<std::string>& only, const RunOptions& opt)
   return 0;
 }
 
+// Prints "sphv: error: <what>" as one line: control characters from the user's input (a newline
+// inside a --set value, say) are shown escaped.
+void error_line(const std::string& what) {
+  std::string line;
+  for (unsigned char ch : what) {
+    if (ch >= 0x20 && ch != 0x7f) {
+      line += static_cast<char>(ch);
+    } else {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\x%02x", ch);
+      line += buf;
+    }
+  }
+  std::fprintf(stderr, "sphv: error: %s\n", line.c_str());
+}
+
 }  // namespace
 
 int run_main(int argc, char** argv) {
-  CLI::App app{"sphv: verification and convergence harness for a reference SPH implementation"};
+  CLI::App app{"sphv: verification and convergence harness for a reference SPH implementation", "sphv"};
   app.require_subcommand(1);
   int threads = 0;
   app.add_option("--threads", threads, "OpenMP threads (default: all cores)")->check(CLI::PositiveNumber);
@@ -148,9 +164,10 @@ int run_main(int argc, char** argv) {
   run->add_option("--out", out, "output directory (default runs/CASE)");
 
   std::vector<long> levels;
+  std::string levels_arg;  // parsed strictly by parse_levels ("" and "16,,32" are refused)
   auto* sweep = app.add_subcommand("sweep", "run a case at several resolutions (and variants): DIR/sweep.json");
   sweep->add_option("case", case_name, "case name")->required();
-  sweep->add_option("--levels", levels, "values of n, e.g. 16,32,64 (default: the case's)")->delimiter(',');
+  auto* levels_opt = sweep->add_option("--levels", levels_arg, "values of n, e.g. 16,32,64 (default: the case's)");
   sweep->add_option("--set", settings, "parameter as key=value (repeatable)")->take_all();
   sweep->add_option("--vary", vary, "variants as key=a,b,c (repeatable: the product); DIR/<variant>/sweep.json")->take_all();
   sweep->add_option("--out", out, "output directory (default runs/CASE-sweep)");
@@ -171,6 +188,10 @@ int run_main(int argc, char** argv) {
   add_bench_command(app);
 
   const bool root = mpi::rank() == 0;
+  if (argc <= 1) {  // a bare `sphv` asks what it can do: the help, exit 0
+    if (root) std::cout << app.help();
+    return 0;
+  }
   // One set of handlers for the parse (bench and gravity run inside it, as callbacks) and for
   // the commands after it: every error ends as one line and a non-zero exit.
   try {
@@ -189,6 +210,7 @@ int run_main(int argc, char** argv) {
     }
     if (*sweep) {
       const Case& c = find_case(case_name);
+      if (levels_opt->count() > 0) levels = parse_levels(levels_arg);
       if (!levels.empty()) c.parse({"n=" + std::to_string(*std::min_element(levels.begin(), levels.end()))});
       if (mpi::size() > 1) opt.jobs = 1;
       const auto sweeps = run_sweeps(c, levels.empty() ? c.levels : levels, expand_variants(settings, vary),
@@ -212,13 +234,13 @@ int run_main(int argc, char** argv) {
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    if (root) std::fprintf(stderr, "sphv: error: %s\n", e.what());
+    if (root) error_line(e.what());
     return 2;
   } catch (const InputError& e) {
-    if (root) std::fprintf(stderr, "sphv: error: %s\n", e.what());
+    if (root) error_line(e.what());
     return 2;
   } catch (const std::exception& e) {  // e.g. an output path that cannot be written
-    if (root) std::fprintf(stderr, "sphv: error: %s\n", e.what());
+    if (root) error_line(e.what());
     return 3;
   }
   return 0;
