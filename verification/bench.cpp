@@ -132,7 +132,7 @@ void bench(const BenchOptions& o) {
              "wall time [s]", "log", "log", {}};
   nlohmann::json slopes = nlohmann::json::object();
   for (auto& [stage, s] : cost) {
-    const double slope = s.x.size() >= 2 ? -observed_order(s.x, s.y) : NAN;
+    const double slope = s.x.size() >= 2 ? -observed_order(s.x, s.y).p : NAN;
     slopes[stage] = std::isfinite(slope) ? nlohmann::json(slope) : nlohmann::json();
     char label[160];
     std::snprintf(label, sizeof label, "%s: slope %.2f", stage.c_str(), slope);

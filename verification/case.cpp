@@ -10,7 +10,21 @@ std::vector<Case>& registry() {
   static std::vector<Case> cases;
   return cases;
 }
+bool starts_with(const std::string& s, const char* prefix) { return s.rfind(prefix, 0) == 0; }
 }  // namespace
+
+Tier parse_tier(const std::string& s) {
+  if (s == "quick") return Tier::quick;
+  if (s == "standard") return Tier::standard;
+  if (s == "full") return Tier::full;
+  throw InputError("unknown tier '" + s + "' (quick, standard or full)");
+}
+
+const char* to_string(Tier t) { return t == Tier::quick ? "quick" : t == Tier::standard ? "standard" : "full"; }
+
+const std::vector<long>& Levels::at(Tier t) const {
+  return t == Tier::quick ? quick : t == Tier::standard ? standard : full;
+}
 
 Registration::Registration(Case c) {
   auto& r = registry();
@@ -32,13 +46,17 @@ Params Case::parse(const std::vector<std::string>& settings) const {
   return p;
 }
 
-std::vector<long> Case::sweep_levels(const std::vector<std::string>& settings, bool gate) const {
-  const std::vector<long>& base = gate ? gate_levels : levels;
-  return levels_for ? levels_for(parse(settings), base) : base;
+std::vector<long> Case::tier_levels(const std::vector<std::string>& settings, Tier t) const {
+  return (levels_for ? levels_for(parse(settings)) : levels).at(t);
 }
 
 bool Case::has_tag(const std::string& t) const {
   return std::find(tags.begin(), tags.end(), t) != tags.end();
+}
+
+bool Case::verdict_expected(const Params& p, const std::string& verdict) const {
+  if (verdict == "ok" || starts_with(verdict, "ok:") || starts_with(verdict, "stable")) return true;
+  return starts_with(verdict, "unstable") && expects_unstable && expects_unstable(p);
 }
 
 Result run_case(const Case& c, const Params& p) {

@@ -1,5 +1,7 @@
 #pragma once
+#include <cmath>
 #include <functional>
+#include <limits>
 #include <map>
 #include <string>
 #include <type_traits>
@@ -13,14 +15,42 @@ namespace sphv {
 struct Sweep;
 
 // One gate: a measured value that must lie in [lo, hi], with the reason for the bounds
-// (theory, or a measurement with a stated margin).
+// (theory, or a measurement with a stated margin). A verification check compares against an
+// independent reference; a drift check against this code's own earlier output.
 struct Check {
+  enum class Kind { verification, drift };
   std::string name;
   double value;
   double lo, hi;
   std::string why;
+  Kind kind = Kind::verification;
+  std::string error;  // the error this check is about ("" = the sweep as a whole)
   bool pass() const { return value >= lo && value <= hi; }
 };
+
+// How much a catalogue run costs: quick = CI-sized (what the Catch2 gates run), standard = the
+// README's main job, full = publication resolutions.
+enum class Tier { quick, standard, full };
+Tier parse_tier(const std::string& s);  // throws InputError
+const char* to_string(Tier t);
+
+// The levels (values of n) of a sweep in each tier.
+struct Levels {
+  std::vector<long> quick, standard, full;
+  const std::vector<long>& at(Tier t) const;
+};
+
+// What a case claims about the convergence of one error. expected = NaN: no order is claimed,
+// and `why` says why (pre-asymptotic, a floor at fixed h/dx, round-off, a map of verdicts).
+// Otherwise the harness gates the observed order within expected +- (band + 2 standard errors).
+struct OrderClaim {
+  double expected = std::numeric_limits<double>::quiet_NaN();
+  double band = 0.0;
+  std::string why;
+  bool claimed() const { return std::isfinite(expected); }
+};
+using OrderClaims = std::map<std::string, OrderClaim>;
+inline OrderClaim no_order(std::string why) { return {std::numeric_limits<double>::quiet_NaN(), 0.0, std::move(why)}; }
 
 // A verification case: one physical set-up, its independent reference and its gates.
 struct Case {
@@ -29,23 +59,26 @@ struct Case {
   std::string n_counts;  // what the resolution parameter n counts
   std::vector<std::string> tags;   // "gate", "sweep", "extreme"
   std::vector<ParamSpec> params;   // must include "n"
-  std::vector<long> levels;        // default sweep (sphv sweep, sphv verify)
-  std::vector<long> gate_levels;   // CI-sized sweep checked by the Catch2 gate
-  // Expected order per error name for a given set of parameters (a jittered set, say, may
-  // expect none), and why those orders are expected.
-  std::function<std::map<std::string, double>(const Params&)> expected_order;
-  std::string expected_why;
-  // Method variants the default catalogue sweeps, as settings (the first is the default).
+  Levels levels;                   // of the default variant, per tier
+  // An order claim per error name the case reports, for a given set of parameters.
+  std::function<OrderClaims(const Params&)> orders;
+  // Each error's exact definition (norm, region, weights): `sphv info`, report axis labels.
+  std::map<std::string, std::string> error_defs;
+  // Method variants the catalogue sweeps, as settings (the first is the default).
   std::vector<std::vector<std::string>> variants = {{}};
-  // Adjusts a sweep's levels to a variant (e.g. fewer in 3D); may be empty.
-  std::function<std::vector<long>(const Params&, std::vector<long>)> levels_for;
+  // A variant's levels when they differ from `levels` (e.g. fewer in 3D); may be empty.
+  std::function<Levels(const Params&)> levels_for;
   std::function<void(const Params&)> validate;   // cross-parameter checks; may be empty
+  // True where an "unstable" verdict is the expected outcome (a method shown to fail); may be empty.
+  std::function<bool(const Params&)> expects_unstable;
   std::function<Result(const Params&)> run;
   std::function<std::vector<Check>(const Sweep&)> gates;  // may be empty
 
   Params parse(const std::vector<std::string>& settings) const;
-  std::vector<long> sweep_levels(const std::vector<std::string>& settings, bool gate) const;
+  std::vector<long> tier_levels(const std::vector<std::string>& settings, Tier t) const;
   bool has_tag(const std::string& t) const;
+  // Whether a run's verdict is what this case expects for these parameters.
+  bool verdict_expected(const Params& p, const std::string& verdict) const;
 };
 
 // Cases register themselves from their own source file: `static Registration r{make_case()};`

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <set>
 #include <thread>
 #include <unistd.h>
 
@@ -33,6 +34,12 @@ void list_cases() {
                 join(c.tags, ",").c_str(), "", c.n_counts.c_str());
 }
 
+std::string levels_text(const std::vector<long>& levels) {
+  std::string s;
+  for (long n : levels) s += (s.empty() ? "" : ",") + std::to_string(n);
+  return s;
+}
+
 void info(const Case& c) {
   std::printf("%s: %s\ntags: %s\nn counts: %s\n\nparameters (sphv run %s --set key=value):\n",
               c.name.c_str(), c.summary.c_str(), join(c.tags, ",").c_str(), c.n_counts.c_str(),
@@ -42,14 +49,23 @@ void info(const Case& c) {
     if (!p.choices.empty()) help += " (" + join(p.choices, "|") + ")";
     std::printf("  %-12s %-12s %s\n", p.name.c_str(), p.default_value.c_str(), help.c_str());
   }
-  std::string lv, gl;
-  for (long n : c.levels) lv += (lv.empty() ? "" : ",") + std::to_string(n);
-  for (long n : c.gate_levels) gl += (gl.empty() ? "" : ",") + std::to_string(n);
-  std::printf("\ndefault sweep levels: %s\ngate levels (ctest): %s\nexpected orders (defaults):", lv.c_str(),
-              gl.c_str());
-  if (c.expected_order)
-    for (const auto& [k, v] : c.expected_order(c.parse({}))) std::printf(" %s=%g", k.c_str(), v);
-  std::printf("\n  %s\n", c.expected_why.c_str());
+  std::printf("\nlevels (default variant): quick %s; standard %s; full %s\n", levels_text(c.levels.quick).c_str(),
+              levels_text(c.levels.standard).c_str(), levels_text(c.levels.full).c_str());
+  std::printf("variants:");
+  for (const auto& v : c.variants) std::printf(" [%s]", v.empty() ? "default" : join(v, " ").c_str());
+  std::printf("\n\nerrors (defaults), their definitions and order claims:\n");
+  const OrderClaims claims = c.orders ? c.orders(c.parse({})) : OrderClaims{};
+  std::set<std::string> names;
+  for (const auto& [k, v] : c.error_defs) names.insert(k);
+  for (const auto& [k, v] : claims) names.insert(k);
+  for (const auto& e : names) {
+    const auto d = c.error_defs.find(e);
+    std::printf("  %s: %s\n", e.c_str(), d == c.error_defs.end() ? "(no definition given)" : d->second.c_str());
+    const auto o = claims.find(e);
+    if (o == claims.end()) std::printf("      no order claim stated\n");
+    else if (!o->second.claimed()) std::printf("      no order claimed: %s\n", o->second.why.c_str());
+    else std::printf("      expected order %.17g +- %g: %s\n", o->second.expected, o->second.band, o->second.why.c_str());
+  }
 }
 
 std::string summary_line(const Result& r) {
@@ -63,24 +79,43 @@ std::string summary_line(const Result& r) {
   return s + ", verdict: " + r.verdict;
 }
 
-// The error a summary shows first: the first one with an expected order, else the first.
-std::string headline_error(const Sweep& s) {
-  if (!s.expected_order.empty()) return s.expected_order.begin()->first;
-  return s.runs.empty() || s.runs.back().errors.empty() ? "" : s.runs.back().errors.begin()->first;
+// Exit status of a judged command: 0 when every gate passes and every verdict is expected, 1 otherwise.
+int status_of(const std::vector<Sweep>& sweeps) {
+  for (const Sweep& s : sweeps)
+    if (!s.passed()) return 1;
+  return 0;
 }
 
-void print_sweep_row(const Case& c, const Sweep& s) {
-  const std::string e = headline_error(s);
-  const double fine = s.runs.back().errors.count(e) ? s.runs.back().errors.at(e) : NAN;
-  const double obs = s.observed_order.count(e) ? s.observed_order.at(e) : NAN;
-  const double exp = s.expected_order.count(e) ? s.expected_order.at(e) : NAN;
-  std::string verdict = s.passed() ? "pass" : "FAIL";
+std::string order_text(double p, double se) {
+  if (!std::isfinite(p)) return "-";
+  char buf[48];
+  if (std::isfinite(se)) std::snprintf(buf, sizeof buf, "%.2f +- %.2f", p, se);
+  else std::snprintf(buf, sizeof buf, "%.2f", p);
+  return buf;
+}
+
+void print_rows_header() {
+  std::printf("%-18s %-26s %-22s %-10s %-14s %-8s %s\n", "case", "variant", "error", "finest", "observed", "expected",
+              "outcome");
+}
+
+// One line per error: its finest value, observed order +- standard error, expected order and
+// outcome; then any failing check that no row names, and run verdicts.
+void print_rows(const Sweep& s) {
+  for (const auto& r : s.rows) {
+    std::string outcome = r.outcome;
+    if (r.outcome != "verified") outcome += ": " + r.why;
+    std::printf("%-18s %-26s %-22s %-10.3e %-14s %-8s %s\n", s.case_name.c_str(), s.variant().c_str(), r.error.c_str(),
+                r.fine_value, order_text(r.observed, r.se).c_str(), std::isfinite(r.expected) ? order_text(r.expected, NAN).c_str() : "-",
+                outcome.c_str());
+  }
   for (const auto& ch : s.checks)
-    if (!ch.pass()) verdict += " [" + ch.name + "=" + std::to_string(ch.value) + "]";
-  for (const auto& r : s.runs)
-    if (r.verdict != "ok" && r.verdict.rfind("stable", 0) != 0) verdict += " (n=" + r.params["n"].dump() + ": " + r.verdict + ")";
-  std::printf("%-14s %-24s %-12s %-11.3e %8.2f %9.2f %8.2f  %s\n", c.name.c_str(), s.variant().c_str(), e.c_str(),
-              fine, obs, exp, s.wall_time_s, verdict.c_str());
+    if (!ch.pass() && ch.error.empty())
+      std::printf("%-18s %-26s %-22s FAIL %s = %.6g not in [%g, %g]: %s\n", s.case_name.c_str(), s.variant().c_str(),
+                  "(sweep)", ch.name.c_str(), ch.value, ch.lo, ch.hi, ch.why.c_str());
+  if (s.rows.empty() && s.passed())
+    std::printf("%-18s %-26s %-22s verdicts and checks pass (%zu checks)\n", s.case_name.c_str(), s.variant().c_str(),
+                "(no errors)", s.checks.size());
   std::fflush(stdout);
 }
 
@@ -93,32 +128,37 @@ std::vector<const Case*> gated(const std::vector<std::string>& only) {
   return out;
 }
 
-int verify(const fs::path& out, const std::vector<std::string>& only, const RunOptions& opt) {
+int verify(const fs::path& out, const std::vector<std::string>& only, Tier tier, const RunOptions& opt) {
   const auto cases = gated(only);
-  if (mpi::rank() == 0)
-    std::printf("%-14s %-24s %-12s %-11s %8s %9s  %s\n", "case", "variant", "error", "finest", "observed",
-                "expected", "wall s   verdict");
-  int failed = 0;
+  if (mpi::rank() == 0) print_rows_header();
+  std::vector<Sweep> all;
   nlohmann::json summary = nlohmann::json::array();
   for (const Case* c : cases) {
-    for (const Sweep& s : run_sweeps(*c, c->levels, c->variants, out / c->name, opt)) {
-      print_sweep_row(*c, s);
-      failed += !s.passed();
-      summary.push_back({{"case", c->name}, {"variant", s.variant()}, {"passed", s.passed()},
-                         {"wall_time_s", s.wall_time_s}});
+    for (Sweep& s : run_sweeps(*c, tier, {}, c->variants, out / c->name, opt)) {
+      print_rows(s);
+      const auto j = to_json(s);
+      summary.push_back({{"case", c->name}, {"variant", s.variant()}, {"tier", s.tier}, {"passed", s.passed()},
+                         {"wall_time_s", s.wall_time_s}, {"rows", j["rows"]}});
+      all.push_back(std::move(s));
     }
   }
   if (mpi::rank() != 0) return 0;
   write_atomically(out / "summary.json", summary.dump(1) + "\n");
-  std::printf("%s: %d failing gate sweep(s)\n", failed ? "FAIL" : "PASS", failed);
-  return failed ? 1 : 0;
+  int verified = 0, no_claim = 0, fail = 0, failed_sweeps = 0;
+  for (const Sweep& s : all) {
+    failed_sweeps += !s.passed();
+    for (const auto& r : s.rows) (r.outcome == "verified" ? verified : r.outcome == "fail" ? fail : no_claim)++;
+  }
+  std::printf("%s: %d verified, %d no order claimed, %d failed rows; %d of %zu sweeps failing (tier %s)\n",
+              failed_sweeps ? "FAIL" : "PASS", verified, no_claim, fail, failed_sweeps, all.size(), to_string(tier));
+  return status_of(all);
 }
 
-// Rewrites the drift baselines from the gate-level sweeps of every gated case (on purpose only).
+// Rewrites the drift baselines from the quick-tier sweeps of every gated case (on purpose only).
 int baseline_update(const std::vector<std::string>& only, const RunOptions& opt) {
   for (const Case* c : gated(only)) {
     std::vector<Sweep> sweeps;
-    for (const auto& v : c->variants) sweeps.push_back(run_sweep(*c, c->sweep_levels(v, true), v, std::nullopt, opt));
+    for (const auto& v : c->variants) sweeps.push_back(run_tier(*c, Tier::quick, v, std::nullopt, opt));
     write_baseline(*c, sweeps);
     std::printf("baseline %s: %zu variant(s) -> %s\n", c->name.c_str(), sweeps.size(),
                 (baseline_dir() / (c->name + ".json")).string().c_str());
@@ -149,6 +189,10 @@ int run_main(int argc, char** argv) {
   app.require_subcommand(1);
   int threads = 0;
   app.add_option("--threads", threads, "OpenMP threads (default: all cores)")->check(CLI::PositiveNumber);
+  fs::path baselines;
+  app.add_option("--baselines", baselines, "drift baselines folder (default: <sphv's folder>/../reference/baselines)");
+  app.footer("Exit status: 0 every gate passed and every run ended as its case expects; 1 a gate failed or a run "
+             "went unstable where it should not; 2 bad input; 3 I/O error.");
 
   auto* list = app.add_subcommand("list", "every case, what its n counts, and its tags");
   auto* info_cmd = app.add_subcommand("info", "a case's parameters with defaults, levels and expected orders");
@@ -165,9 +209,11 @@ int run_main(int argc, char** argv) {
 
   std::vector<long> levels;
   std::string levels_arg;  // parsed strictly by parse_levels ("" and "16,,32" are refused)
+  std::string tier_name = "standard";
   auto* sweep = app.add_subcommand("sweep", "run a case at several resolutions (and variants): DIR/sweep.json");
   sweep->add_option("case", case_name, "case name")->required();
-  auto* levels_opt = sweep->add_option("--levels", levels_arg, "values of n, e.g. 16,32,64 (default: the case's)");
+  auto* levels_opt = sweep->add_option("--levels", levels_arg, "values of n, e.g. 16,32,64, run exactly as given (default: the tier's)");
+  sweep->add_option("--tier", tier_name, "quick | standard | full: the case's levels for that tier (default standard)");
   sweep->add_option("--set", settings, "parameter as key=value (repeatable)")->take_all();
   sweep->add_option("--vary", vary, "variants as key=a,b,c (repeatable: the product); DIR/<variant>/sweep.json")->take_all();
   sweep->add_option("--out", out, "output directory (default runs/CASE-sweep)");
@@ -178,10 +224,11 @@ int run_main(int argc, char** argv) {
   auto* verify_cmd = app.add_subcommand("verify", "the default catalogue: sweeps, gates, summary table");
   verify_cmd->add_option("--out", out, "output directory (default runs/verify)");
   verify_cmd->add_option("--cases", only, "only these cases")->delimiter(',');
+  verify_cmd->add_option("--tier", tier_name, "quick (CI-sized, the Catch2 gates) | standard | full (default standard)");
   verify_cmd->add_flag("--force", opt.force, "rerun points that already have a result of this code version");
 
   auto* baseline = app.add_subcommand("baseline", "drift baselines (own earlier output, not verification)");
-  auto* baseline_up = baseline->add_subcommand("update", "rewrite reference/baselines/ from gate-level sweeps");
+  auto* baseline_up = baseline->add_subcommand("update", "rewrite the drift baselines from quick-tier sweeps");
   baseline->require_subcommand(1);
   baseline_up->add_option("--cases", only, "only these cases")->delimiter(',');
   add_gravity_command(app);
@@ -197,6 +244,8 @@ int run_main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
     if (threads > 0) omp_set_num_threads(threads);
+    if (!baselines.empty()) set_baseline_dir(baselines);
+    const Tier tier = parse_tier(tier_name);
     opt.exe = fs::canonical("/proc/self/exe");
     opt.progress = true;
     if (*list) list_cases();
@@ -207,28 +256,29 @@ int run_main(int argc, char** argv) {
       const Result r = run_case(c, p);
       write_result(r, out.empty() ? fs::path("runs") / c.name : out);
       std::printf("%s\n", summary_line(r).c_str());
+      if (!c.verdict_expected(p, r.verdict)) return 1;
     }
     if (*sweep) {
       const Case& c = find_case(case_name);
       if (levels_opt->count() > 0) levels = parse_levels(levels_arg);
-      if (!levels.empty()) c.parse({"n=" + std::to_string(*std::min_element(levels.begin(), levels.end()))});
       if (mpi::size() > 1) opt.jobs = 1;
-      const auto sweeps = run_sweeps(c, levels.empty() ? c.levels : levels, expand_variants(settings, vary),
+      const auto sweeps = run_sweeps(c, tier, levels, expand_variants(settings, vary),
                                      out.empty() ? fs::path("runs") / (c.name + "-sweep") : out, opt);
+      if (!root) return 0;
       for (const Sweep& s : sweeps) {
         for (const auto& r : s.runs) std::printf("%s\n", summary_line(r).c_str());
-        for (const auto& [k, v] : s.observed_order)
-          std::printf("observed order %-10s %6.2f  (expected %s)\n", k.c_str(), v,
-                      s.expected_order.count(k) ? std::to_string(s.expected_order.at(k)).c_str() : "-");
         for (const auto& ch : s.checks)
-          std::printf("gate %-28s %-10.4g in [%g, %g]: %s\n", ch.name.c_str(), ch.value, ch.lo, ch.hi,
-                      ch.pass() ? "pass" : "FAIL");
+          std::printf("gate %-28s %-10.4g in [%g, %g] (%s): %s\n", ch.name.c_str(), ch.value, ch.lo, ch.hi,
+                      ch.kind == Check::Kind::drift ? "drift" : "verification", ch.pass() ? "pass" : "FAIL");
       }
+      print_rows_header();
+      for (const Sweep& s : sweeps) print_rows(s);
+      return status_of(sweeps);
     }
     if (*verify_cmd) {
       opt.jobs = 1;  // each point uses every core through OpenMP
       opt.progress = false;
-      return verify(out.empty() ? fs::path("runs/verify") : out, only, opt);
+      return verify(out.empty() ? fs::path("runs/verify") : out, only, tier, opt);
     }
     if (*baseline_up) return root ? baseline_update(only, {}) : 0;
   } catch (const CLI::CallForHelp& e) {

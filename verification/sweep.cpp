@@ -4,15 +4,86 @@
 
 #include <gsl/gsl_fit.h>
 
-#include <chrono>
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <set>
 
 namespace sphv {
+
+namespace {
+constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+
+// Order checks of the claims: the observed order within expected +- (band + 2 se); se is
+// unknown (taken as 0) with two levels, where the fit is exact.
+std::vector<Check> order_checks(const Sweep& s) {
+  std::vector<Check> c;
+  for (const auto& [name, claim] : s.claims) {
+    const auto o = s.observed_order.find(name);
+    if (!claim.claimed() || o == s.observed_order.end() || !std::isfinite(o->second.p)) continue;
+    const double width = claim.band + (std::isfinite(o->second.se) ? 2.0 * o->second.se : 0.0);
+    c.push_back({"order_" + name, o->second.p, claim.expected - width, claim.expected + width, claim.why,
+                 Check::Kind::verification, name});
+  }
+  return c;
+}
+
+std::string failed_names(const std::vector<const Check*>& checks) {
+  std::string s;
+  for (const Check* c : checks)
+    if (!c->pass()) s += (s.empty() ? "" : ", ") + c->name;
+  return s;
+}
+
+// The outcome of every error the runs report (and every claimed one).
+std::vector<Row> rows_of(const Sweep& s) {
+  std::set<std::string> names;
+  for (const auto& r : s.runs)
+    for (const auto& [k, v] : r.errors) names.insert(k);
+  std::vector<Row> rows;
+  for (const auto& e : names) {
+    Row row{e, nan, nan, nan, nan, 0.0, "fail", ""};
+    if (!s.runs.empty() && s.runs.back().errors.count(e)) row.fine_value = s.runs.back().errors.at(e);
+    if (auto o = s.observed_order.find(e); o != s.observed_order.end()) row.observed = o->second.p, row.se = o->second.se;
+    std::vector<const Check*> on;
+    for (const auto& c : s.checks)
+      if (c.error == e) on.push_back(&c);
+    const bool ordered = std::any_of(on.begin(), on.end(), [&](const Check* c) { return c->name == "order_" + e; });
+    const bool bounded = std::any_of(on.begin(), on.end(), [&](const Check* c) {
+      return c->kind == Check::Kind::verification && c->name != "order_" + e;
+    });
+    const auto claim = s.claims.find(e);
+    if (claim == s.claims.end()) {
+      row.why = "the case states no order claim for this error";
+    } else if (const std::string f = failed_names(on); !f.empty()) {
+      row.expected = claim->second.expected, row.band = claim->second.band;
+      row.why = "failed: " + f;
+    } else if (!claim->second.claimed()) {
+      row.outcome = "no order claimed";
+      row.why = claim->second.why;
+    } else {
+      row.expected = claim->second.expected, row.band = claim->second.band;
+      if (ordered && bounded) {
+        row.outcome = "verified";
+        row.why = claim->second.why;
+      } else if (!ordered && s.levels.size() < 2 && bounded) {
+        row.outcome = "no order claimed";
+        row.why = "one level in this sweep: the order is not observable; its bound held";
+      } else {
+        row.why = !ordered ? "order claimed but not observed at every level" : "order claimed but the error has no bound";
+      }
+    }
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
+}  // namespace
 
 bool Sweep::passed() const {
   for (const auto& c : checks)
     if (!c.pass()) return false;
+  for (const auto& r : rows)
+    if (r.outcome == "fail") return false;
   return true;
 }
 
@@ -23,59 +94,53 @@ std::string Sweep::variant() const {
   return s;
 }
 
-double observed_order(const std::vector<double>& n, const std::vector<double>& err) {
+Order observed_order(const std::vector<double>& n, const std::vector<double>& err) {
   std::vector<double> x, y;
   for (std::size_t k = 0; k < n.size() && k < err.size(); ++k)
     if (err[k] > 0.0 && std::isfinite(err[k])) {
       x.push_back(std::log(n[k]));
       y.push_back(std::log(err[k]));
     }
-  if (x.size() < 2) return std::numeric_limits<double>::quiet_NaN();
+  if (x.size() < 2) return {nan, nan};
   double c0, c1, cov00, cov01, cov11, sumsq;
   gsl_fit_linear(x.data(), 1, y.data(), 1, x.size(), &c0, &c1, &cov00, &cov01, &cov11, &sumsq);
-  return -c1;
+  return {-c1, x.size() > 2 ? std::sqrt(cov11) : nan};
 }
 
 std::optional<Gci> grid_convergence_index(const std::vector<double>& n, const std::vector<double>& f,
-                                          double expected_order) {
+                                          double claimed_order) {
   const std::size_t k = n.size();
   if (k < 2 || f.size() != k) return std::nullopt;
   const double f1 = f[k - 1], f2 = f[k - 2];  // finest, next
   const double r = n[k - 1] / n[k - 2];
   if (!(r > 1.0) || !std::isfinite(f1) || f1 == 0.0) return std::nullopt;
-  Gci g{f1, expected_order, r, 3.0, 0.0};
+  Gci g{f1, claimed_order, r, 3.0, 0.0};
   if (k >= 3) {
     const double f3 = f[k - 3], r23 = n[k - 2] / n[k - 3];
     const double e21 = f1 - f2, e32 = f2 - f3;
-    g.safety = 1.25;
     // Three levels at a constant ratio give the order directly (Roache 1994).
-    if (std::abs(r23 - r) < 1e-9 * r && e21 != 0.0 && e32 != 0.0 && e32 / e21 > 0.0)
+    if (std::abs(r23 - r) < 1e-9 * r && e21 != 0.0 && e32 != 0.0 && e32 / e21 > 0.0) {
       g.order = std::log(e32 / e21) / std::log(r);
+      g.safety = 1.25;
+    }
   }
   if (!(g.order > 0.0) || !std::isfinite(g.order)) return std::nullopt;
   g.gci = g.safety * std::abs((f1 - f2) / f1) / (std::pow(r, g.order) - 1.0);
   return g;
 }
 
-std::vector<Check> order_checks(const Sweep& s, double band, const std::string& why) {
-  std::vector<Check> c;
-  for (const auto& [name, p] : s.expected_order)
-    if (s.observed_order.count(name))
-      c.push_back({"order_" + name, s.observed_order.at(name), p - band, p + band, why});
-  return c;
-}
-
 Sweep summarise(const Case& c, const std::vector<std::string>& settings, const std::vector<long>& levels,
-                std::vector<Result> runs) {
+                std::vector<Result> runs, const std::string& tier) {
   Sweep s;
   s.case_name = c.name;
   s.summary = c.summary;
   s.n_counts = c.n_counts;
-  s.expected_why = c.expected_why;
+  s.error_defs = c.error_defs;
+  s.tier = tier;
   s.levels = levels;
   const Params base = c.parse(settings);
   s.settings = base.non_defaults();
-  if (c.expected_order) s.expected_order = c.expected_order(base);
+  if (c.orders) s.claims = c.orders(base);
   s.runs = std::move(runs);
   for (const auto& r : s.runs) s.wall_time_s += r.wall_time_s;
 
@@ -88,12 +153,18 @@ Sweep summarise(const Case& c, const std::vector<std::string>& settings, const s
   for (const auto& [k, v] : errs)
     if (v.size() == n.size()) s.observed_order[k] = observed_order(n, v);
   for (const auto& [k, v] : funcs) {
-    double p = s.expected_order.empty() ? 1.0 : s.expected_order.begin()->second;
+    const auto claim = s.claims.find(k);
     if (v.size() == n.size())
-      if (auto g = grid_convergence_index(n, v, p)) s.gci[k] = *g;
+      if (auto g = grid_convergence_index(n, v, claim == s.claims.end() ? nan : claim->second.expected)) s.gci[k] = *g;
   }
   if (c.gates) s.checks = c.gates(s);
+  for (auto& o : order_checks(s)) s.checks.push_back(std::move(o));
+  for (std::size_t k = 0; k < s.runs.size(); ++k)
+    if (!c.verdict_expected(base, s.runs[k].verdict))
+      s.checks.push_back({"expected_verdict_n" + std::to_string(levels[k]), 0.0, 1.0, 1.0,
+                          "the run ended '" + s.runs[k].verdict + "' where the case expects it to complete"});
   for (auto& d : drift_checks(s)) s.checks.push_back(std::move(d));
+  s.rows = rows_of(s);
   return s;
 }
 
@@ -102,6 +173,16 @@ Sweep run_sweep(const Case& c, const std::vector<long>& levels, const std::vecto
   std::vector<Point> points;
   for (long n : levels) points.push_back({settings, n, out ? *out / ("n" + std::to_string(n)) : ""});
   Sweep s = summarise(c, settings, levels, run_points(c, points, opt));
+  if (out) write_atomically(*out / "sweep.json", to_json(s).dump(1) + "\n");
+  return s;
+}
+
+Sweep run_tier(const Case& c, Tier t, const std::vector<std::string>& settings,
+               const std::optional<std::filesystem::path>& out, const RunOptions& opt) {
+  const auto levels = c.tier_levels(settings, t);
+  std::vector<Point> points;
+  for (long n : levels) points.push_back({settings, n, out ? *out / ("n" + std::to_string(n)) : ""});
+  Sweep s = summarise(c, settings, levels, run_points(c, points, opt), to_string(t));
   if (out) write_atomically(*out / "sweep.json", to_json(s).dump(1) + "\n");
   return s;
 }
@@ -129,14 +210,14 @@ std::vector<std::vector<std::string>> expand_variants(const std::vector<std::str
   return out;
 }
 
-std::vector<Sweep> run_sweeps(const Case& c, const std::vector<long>& levels,
+std::vector<Sweep> run_sweeps(const Case& c, Tier t, const std::vector<long>& levels,
                               const std::vector<std::vector<std::string>>& variants,
                               const std::filesystem::path& out, const RunOptions& opt) {
   std::vector<Point> points;
   std::vector<std::vector<long>> lv;
   std::vector<std::filesystem::path> dirs;
   for (const auto& v : variants) {
-    lv.push_back(c.levels_for ? c.levels_for(c.parse(v), levels) : levels);
+    lv.push_back(levels.empty() ? c.tier_levels(v, t) : levels);
     const Sweep label{.settings = c.parse(v).non_defaults()};
     dirs.push_back(variants.size() == 1 ? out : out / label.variant());
     for (long n : lv.back()) points.push_back({v, n, dirs.back() / ("n" + std::to_string(n))});
@@ -148,7 +229,7 @@ std::vector<Sweep> run_sweeps(const Case& c, const std::vector<long>& levels,
   for (std::size_t k = 0; k < variants.size(); ++k) {
     std::vector<Result> runs(it, it + lv[k].size());
     it += lv[k].size();
-    sweeps.push_back(summarise(c, variants[k], lv[k], std::move(runs)));
+    sweeps.push_back(summarise(c, variants[k], lv[k], std::move(runs), levels.empty() ? to_string(t) : ""));
     write_atomically(dirs[k] / "sweep.json", to_json(sweeps.back()).dump(1) + "\n");
   }
   return sweeps;
@@ -156,23 +237,28 @@ std::vector<Sweep> run_sweeps(const Case& c, const std::vector<long>& levels,
 
 nlohmann::json to_json(const Sweep& s) {
   auto num = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); };
-  nlohmann::json runs = nlohmann::json::array(), order = nlohmann::json::object(),
-                 expected = nlohmann::json::object(), gci = nlohmann::json::object(),
-                 checks = nlohmann::json::array();
+  const auto kind = [](Check::Kind k) { return k == Check::Kind::drift ? "drift" : "verification"; };
+  nlohmann::json runs = nlohmann::json::array(), order = nlohmann::json::object(), se = nlohmann::json::object(),
+                 claims = nlohmann::json::object(), gci = nlohmann::json::object(),
+                 checks = nlohmann::json::array(), rows = nlohmann::json::array();
   for (const auto& r : s.runs) runs.push_back(to_json(r));
-  for (const auto& [k, v] : s.observed_order) order[k] = num(v);
-  for (const auto& [k, v] : s.expected_order) expected[k] = v;
+  for (const auto& [k, v] : s.observed_order) order[k] = num(v.p), se[k] = num(v.se);
+  for (const auto& [k, v] : s.claims) claims[k] = {{"expected", num(v.expected)}, {"band", v.band}, {"why", v.why}};
   for (const auto& [k, g] : s.gci)
     gci[k] = {{"fine_value", num(g.fine_value)}, {"order", num(g.order)}, {"ratio", g.ratio},
               {"Fs", g.safety}, {"gci", num(g.gci)}};
   for (const auto& c : s.checks)
     checks.push_back({{"name", c.name}, {"value", num(c.value)}, {"lo", num(c.lo)}, {"hi", num(c.hi)},
-                      {"why", c.why}, {"pass", c.pass()}});
-  return {{"case", s.case_name}, {"summary", s.summary}, {"n_counts", s.n_counts},
-          {"expected_why", s.expected_why}, {"variant", s.variant()}, {"settings", s.settings},
-          {"levels", s.levels},  {"runs", runs},           {"observed_order", order},
-          {"expected_order", expected}, {"gci", gci},      {"checks", checks},
-          {"passed", s.passed()}, {"wall_time_s", s.wall_time_s}};
+                      {"why", c.why}, {"pass", c.pass()}, {"kind", kind(c.kind)}, {"error", c.error}});
+  for (const auto& r : s.rows)
+    rows.push_back({{"error", r.error}, {"fine_value", num(r.fine_value)}, {"observed", num(r.observed)},
+                    {"se", num(r.se)}, {"expected", num(r.expected)}, {"band", r.band},
+                    {"outcome", r.outcome}, {"why", r.why}});
+  return {{"case", s.case_name}, {"summary", s.summary}, {"n_counts", s.n_counts}, {"variant", s.variant()},
+          {"settings", s.settings}, {"tier", s.tier}, {"levels", s.levels}, {"runs", runs},
+          {"observed_order", order}, {"order_se", se}, {"claims", claims}, {"error_defs", s.error_defs},
+          {"gci", gci}, {"checks", checks}, {"rows", rows}, {"passed", s.passed()},
+          {"wall_time_s", s.wall_time_s}};
 }
 
 }  // namespace sphv

@@ -22,51 +22,71 @@ struct Gci {
   double gci;        // relative uncertainty band of the finest value
 };
 
+// Observed order p of err ~ C n^-p with its standard error (NaN below three points).
+struct Order {
+  double p, se;
+};
+
+// What one error of a sweep establishes: verified (order inside its band and every bound held),
+// no order claimed (the case says why; its bounds held), or fail.
+struct Row {
+  std::string error;
+  double fine_value, observed, se, expected, band;
+  std::string outcome;  // "verified", "no order claimed" or "fail"
+  std::string why;
+};
+
 // A case run at several resolutions, with the fitted orders of convergence.
 struct Sweep {
   std::string case_name;
-  std::string summary, n_counts, expected_why;  // from the case, for reports
-  std::vector<std::string> settings;  // the variant: settings other than n
+  std::string summary, n_counts;        // from the case, for reports
+  std::vector<std::string> settings;    // the variant: settings other than n
+  std::string tier;                     // "quick", "standard", "full", or "" for levels given by hand
   std::vector<long> levels;
   std::vector<Result> runs;
-  std::map<std::string, double> observed_order;  // least-squares slope, per error name
-  std::map<std::string, double> expected_order;
-  std::map<std::string, Gci> gci;                // per functional
+  std::map<std::string, Order> observed_order;  // least-squares fit, per error name
+  OrderClaims claims;
+  std::map<std::string, std::string> error_defs;
+  std::map<std::string, Gci> gci;               // per functional
   std::vector<Check> checks;
+  std::vector<Row> rows;
   double wall_time_s = 0.0;
   bool passed() const;
   std::string variant() const;  // "default" or the settings joined
 };
 
-// Observed order p of err ~ C n^-p: minus the least-squares slope of log err on log n
-// (GSL gsl_fit_linear). Non-positive or non-finite errors are skipped; NaN below two points.
-double observed_order(const std::vector<double>& n, const std::vector<double>& err);
+// Observed order of err ~ C n^-p: minus the least-squares slope of log err on log n and its
+// standard error from the fit's covariance (GSL gsl_fit_linear). Non-positive or non-finite
+// errors are skipped; p is NaN below two points, se below three.
+Order observed_order(const std::vector<double>& n, const std::vector<double>& err);
+// Roache's GCI on the two finest levels: the order observed from three levels at a constant
+// ratio (Fs = 1.25), else the claimed order with Fs = 3; none without either.
 std::optional<Gci> grid_convergence_index(const std::vector<double>& n, const std::vector<double>& f,
-                                          double expected_order);
-
-// Gates on the expected orders: "order_<error>" with the observed order within [p - band, p + band]
-// of the expected p, for each error observed at every level (others get no check).
-std::vector<Check> order_checks(const Sweep& s, double band, const std::string& why);
+                                          double claimed_order);
 
 // Runs the case at each level (parameter n) with the given settings; with out set, writes
 // out/n<level>/result.json as each run finishes and out/sweep.json at the end.
 Sweep run_sweep(const Case& c, const std::vector<long>& levels, const std::vector<std::string>& settings,
                 const std::optional<std::filesystem::path>& out = std::nullopt, const RunOptions& opt = {});
+// The same at a tier's levels for the variant (what the Catch2 gates and `verify` run).
+Sweep run_tier(const Case& c, Tier t, const std::vector<std::string>& settings,
+               const std::optional<std::filesystem::path>& out = std::nullopt, const RunOptions& opt = {});
 
 // The variants of `--vary key=a,b,c` (repeatable): the product of all values, each added to
 // the base settings.
 std::vector<std::vector<std::string>> expand_variants(const std::vector<std::string>& base,
                                                       const std::vector<std::string>& vary);
 
-// Runs levels x variants as one pool of points (levels adjusted per variant by the case) and
-// writes out/<variant>/sweep.json per variant. Under mpirun only rank 0 returns sweeps.
-std::vector<Sweep> run_sweeps(const Case& c, const std::vector<long>& levels,
+// Runs levels x variants as one pool of points and writes out/<variant>/sweep.json per variant.
+// Levels: the tier's for each variant, or exactly the given ones when `levels` is not empty.
+// Under mpirun only rank 0 returns sweeps.
+std::vector<Sweep> run_sweeps(const Case& c, Tier t, const std::vector<long>& levels,
                               const std::vector<std::vector<std::string>>& variants,
                               const std::filesystem::path& out, const RunOptions& opt);
 
-// Orders, GCI and gate checks of a finished set of runs.
+// Orders, GCI, gate checks and row outcomes of a finished set of runs.
 Sweep summarise(const Case& c, const std::vector<std::string>& settings, const std::vector<long>& levels,
-                std::vector<Result> runs);
+                std::vector<Result> runs, const std::string& tier = "");
 
 nlohmann::json to_json(const Sweep& s);
 

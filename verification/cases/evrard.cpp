@@ -244,15 +244,27 @@ const Registration reg{Case{
     }(),
     // Lattices of 12, 16, 20 cells per diameter (exact counts, so that the order fit sees the real N);
     // 16k particles would take ~15 min on this machine.
-    .levels = {912, 2176, 4224},
-    .gate_levels = {912},
-    .expected_order =
+    .levels = {.quick = {912}, .standard = {912, 2176, 4224}, .full = {912, 2176, 4224}},
+    // Measured 0.27-0.30 over N = 912, 2176, 4224 (closing note of issue 7); band 0.15 around 1/3.
+    .orders =
         [](const Params&) {
-          return std::map<std::string, double>{{"kinetic_L1", 1.0 / 3.0}, {"thermal_L1", 1.0 / 3.0},
-                                               {"potential_L1", 1.0 / 3.0}};
+          const OrderClaim third{1.0 / 3.0, 0.15,
+                                 "the bounce shock is smeared over a few h by the artificial viscosity: curve errors "
+                                 "first order in h ~ N^(-1/3) at fixed hfact, i.e. order 1/3 in the particle number"};
+          const OrderClaim info = no_order("reported for information: the largest difference sits at the bounce "
+                                           "shock; the L1 of the same curve carries the claim");
+          return OrderClaims{{"kinetic_L1", third}, {"thermal_L1", third}, {"potential_L1", third},
+                             {"kinetic_max", info}, {"thermal_max", info}, {"potential_max", info},
+                             {"energy_conservation", no_order("conservation, not convergence: time-step and tree-force "
+                                                              "error at fixed theta and eps, bounded at every level")}};
         },
-    .expected_why = "the bounce shock is smeared over a few h by the artificial viscosity: curve errors first order "
-                    "in h ~ N^(-1/3) at fixed hfact, i.e. order 1/3 in the particle number",
+    .error_defs = {{"energy_conservation", "max over t of |E(t) - E(0)| / |E(0)|, E = kinetic + thermal + potential"},
+                   {"kinetic_L1", "mean over the reference's output times of |E_kin(t) - E_kin,ref(t)| / |W(0)|, W(0) = -2/3 G M^2/R"},
+                   {"thermal_L1", "mean over the reference's output times of |E_th(t) - E_th,ref(t)| / |W(0)|"},
+                   {"potential_L1", "mean over the reference's output times of |W(t) - W_ref(t)| / |W(0)|"},
+                   {"kinetic_max", "max over the reference's output times of |E_kin(t) - E_kin,ref(t)| / |W(0)|"},
+                   {"thermal_max", "max over the reference's output times of |E_th(t) - E_th,ref(t)| / |W(0)|"},
+                   {"potential_max", "max over the reference's output times of |W(t) - W_ref(t)| / |W(0)|"}},
     .variants = {{}},
     .validate = validate,
     .run = run,

@@ -109,8 +109,10 @@ std::vector<Check> gates(const Sweep& s) {
     // Every kind must end with a verdict; these three are expected to be stable.
     c.push_back({level + "_stable", double(r.verdict == "stable"), 1.0, 1.0, "ends stable, no NaN"});
     if (kind == "isolated" && r.verdict == "stable") {
-      c.push_back({level + "_self_density", r.errors.at("self_density"), 0.0, 1e-12, "(49): rho = m W(0, h_max), round-off"});
-      c.push_back({level + "_at_rest", r.errors.at("speed"), 0.0, 0.0, "no neighbour, no force"});
+      c.push_back({level + "_self_density", r.errors.at("self_density"), 0.0, 1e-12, "(49): rho = m W(0, h_max), round-off",
+                   Check::Kind::verification, "self_density"});
+      c.push_back({level + "_at_rest", r.errors.at("speed"), 0.0, 0.0, "no neighbour, no force", Check::Kind::verification,
+                   "speed"});
     }
   }
   return c;
@@ -129,10 +131,16 @@ const Registration reg{Case{
       for (auto& q : extreme::method_params(5.0 / 3.0, 2.4)) ps.push_back(q);
       return ps;
     }(),
-    .levels = {16, 32},
-    .gate_levels = {16},
-    .expected_order = {},
-    .expected_why = "verdicts, no convergence",
+    .levels = {.quick = {16}, .standard = {16, 32}, .full = {16, 32}},
+    .orders = [](const Params&) {
+      const std::string why = "a degenerate input has a verdict and exact values, not a convergence rate";
+      return OrderClaims{{"self_density", no_order(why)}, {"speed", no_order(why)},
+                         {"speed_over_c_dense", no_order(why)}, {"pressure_blip", no_order(why)}};
+    },
+    .error_defs = {{"self_density", "isolated particle: |rho - m W(0, h_max)| / (m W(0, h_max)), (49)"},
+                   {"speed", "isolated particle: max |v| at t_end (exact 0: no neighbour, no force)"},
+                   {"speed_over_c_dense", "contact at rest: max_i |v_i| / c of the dense side at t_end (exact 0)"},
+                   {"pressure_blip", "contact at rest: max_i |p_i - 1| at t_end (exact p = 1 everywhere)"}},
     .variants = {{"kind=isolated"}, {"kind=coincident"}, {"kind=contrast", "t_end=0.005"}},
     .validate = {},
     .run = run,

@@ -99,11 +99,22 @@ void validate(const Params& p) {
   if (p.real("jitter") >= 0.5) throw InputError("laplacian: jitter must be < 0.5 (particles may not swap cells)");
 }
 
-std::map<std::string, double> expected(const Params& p) {
-  if (p.real("jitter") > 0.0) return {};  // no convergence at fixed h/dx on disordered sets, see expected_why
-  std::map<std::string, double> o{{"brookshaw", 2.0}, {"flux_56_58", 2.0}, {"flux_57_59", 2.0}};
+// Theory: O(h^2) smoothing error of a symmetric kernel. Band +-0.3: the measured fit mixes the
+// h^4 term at coarse levels and the second-moment floor at fine ones.
+OrderClaims orders(const Params& p) {
+  if (p.real("jitter") > 0.0) {
+    const OrderClaim none = no_order("jittered set at fixed h/dx: the first-moment sum is O(jitter) and is divided by h, "
+                                     "so the pointwise error does not converge (grows like 1/h for the two-pass forms)");
+    return {{"brookshaw", none}, {"flux_56_58", none}, {"flux_57_59", none}, {"tensor_73", none}};
+  }
+  const OrderClaim two{2.0, 0.3, "lattice: O(h^2) (second moment of a symmetric kernel) until the fixed-h/dx "
+                                 "lattice second-moment floor |M2/S0 - 1| (0 in 1D at hfact 2 or 4; 8.6e-4 in 2D, "
+                                 "1.3e-4 in 3D at 4)"};
+  OrderClaims o{{"brookshaw", two}, {"flux_56_58", two}, {"flux_57_59", two}};
   // (73) off the diagonal needs isotropic fourth lattice moments: 1D only (2D/3D level off).
-  if (p.integer("dim") == 1) o["tensor_73"] = 2.0;
+  o["tensor_73"] = p.integer("dim") == 1 ? two
+                                         : no_order("tensor (73) in 2D/3D: its off-diagonal part needs isotropic fourth "
+                                                    "lattice moments and levels off near 2e-2 (measured)");
   return o;
 }
 
@@ -112,14 +123,11 @@ std::vector<Check> gates(const Sweep& s) {
   const auto& fine = s.runs.back();
   const bool jittered = fine.extra["jitter"].get<double>() > 0.0;
   if (!jittered) {
-    // Theory: O(h^2) smoothing error of a symmetric kernel. Band +-0.3: the measured fit mixes
-    // the h^4 term at coarse levels and the second-moment floor at fine ones (measured below).
-    c = order_checks(s, 0.3, "O(h^2) smoothing error, fixed h/dx");
     // The lattice operator is a convolution: its error on an eigenmode is the symbol's error,
     // computed independently by direct lattice sums; agreement to round-off (1e-9 relative).
     const double pred = fine.extra["lattice_symbol_error"];
     c.push_back({"brookshaw_equals_symbol", std::abs(fine.errors.at("brookshaw") / pred - 1.0), 0.0, 1e-9,
-                 "sine mode is an eigenmode of the lattice operator"});
+                 "sine mode is an eigenmode of the lattice operator", Check::Kind::verification, "brookshaw"});
   } else {
     // Disorder adds a non-vanishing first-moment error on top of the lattice error (which the
     // lattice symbol gives): the jittered error exceeds it (measured 1.3 to 80 times).
@@ -145,15 +153,12 @@ const Registration reg{Case{
                integer_param("dim", 1, "dimension 1, 2 or 3"),
                real_param("hfact", 4.0, "support radius / spacing h/dx (4: 1D lattice sums exact, 2D/3D floors 9e-4/1.3e-4)", 0.0),
                ParamSpec{"jitter", ParamSpec::Kind::Real, "0", "uniform displacement per axis, fraction of dx", std::nullopt, 0.0}},
-    .levels = {16, 24, 32, 48, 64},
-    .gate_levels = {16, 24, 32},
-    .expected_order = expected,
-    .expected_why = "lattice: O(h^2) (second moment of a symmetric kernel) until the fixed-h/dx lattice "
-                    "second-moment floor |M2/S0 - 1| (0 in 1D at hfact 2 or 4; 8.6e-4 in 2D, 1.3e-4 in 3D at 4); "
-                    "tensor (73): order 2 in 1D; in 2D/3D its off-diagonal part needs isotropic fourth "
-                    "lattice moments and levels off near 2e-2 (measured); "
-                    "jittered: the first-moment sum is O(jitter) and is divided by h, so the pointwise error "
-                    "does not converge at fixed h/dx (grows like 1/h for the two-pass symmetric form squared)",
+    .levels = {.quick = {16, 24, 32}, .standard = {16, 24, 32, 48, 64}, .full = {16, 24, 32, 48, 64}},
+    .orders = orders,
+    .error_defs = {{"brookshaw", "relative L2 over particles of Brookshaw's (67)/(69) against the exact Laplacian of the sine product"},
+                   {"flux_56_58", "relative L2 of the two-pass symmetric form (56)+(58) against the exact Laplacian"},
+                   {"flux_57_59", "relative L2 of the two-pass difference form (57)+(59) against the exact Laplacian"},
+                   {"tensor_73", "sqrt(sum_i |H_i - H_exact|^2 / sum_i |H_exact|^2), Hessian tensor (73) (Frobenius)"}},
     .variants = {{}, {"dim=2"}, {"dim=3"}, {"jitter=0.1"}, {"dim=2", "jitter=0.1"}, {"dim=3", "jitter=0.1"}},
     .validate = validate,
     .run = run,

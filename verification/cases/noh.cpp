@@ -146,19 +146,23 @@ std::vector<Check> gates(const Sweep& s) {
     // R_s = 0.8 h0: the shock is a few post-shock h thick and runs ahead). Tolerances: margin ~1.3-2.
     const double tol_swept = d == 1 ? 0.015 : d == 2 ? 0.05 : 0.6;
     c.push_back({level + "_swept_mass", r.errors.at("swept_mass"), 0.0, tol_swept,
-                 "mass brought to rest vs rho0 vol(4 t / 3) (measured, margin >= 1.3)"});
+                 "mass brought to rest vs rho0 vol(4 t / 3) (measured, margin >= 1.3)", Check::Kind::verification,
+                 "swept_mass"});
     if (d == 3) return;  // at 3D gate sizes there is no post-shock plateau (peak 12 against 64 at n=10)
     // Measured post-shock density errors at the gate level: 1D n=200 1.3% (also 1.3% at n=400: the
     // deficit is the entropy excess of the start-up collision, not resolution), 2D n=50 7.7%;
     // tolerances about twice that.
     c.push_back({level + "_rho_post", r.errors.at("rho_post"), 0.0, d == 1 ? 0.03 : 0.15,
-                 "post-shock density 4^d away from the wall (measured error, margin 2)"});
+                 "post-shock density 4^d away from the wall (measured error, margin 2)", Check::Kind::verification,
+                 "rho_post"});
     // Measured: the shock runs ahead by 4.2% (1D n=200), 5.4% (2D n=50): the wall-heated centre
     // holds less mass, so the shock sits further out. Tolerance 10% (margin ~2).
     c.push_back({level + "_shock_speed", r.errors.at("shock_speed"), 0.0, 0.1,
-                 "shock speed 1/3 within 10% (measured, margin 2)"});
+                 "shock speed 1/3 within 10% (measured, margin 2)", Check::Kind::verification, "shock_speed"});
   });
 }
+
+const Levels levels = {.quick = {200}, .standard = {200, 400, 800}, .full = {200, 400, 800}};
 
 const Registration reg{Case{
     .name = "noh",
@@ -174,16 +178,23 @@ const Registration reg{Case{
       for (auto& q : extreme::method_params(5.0 / 3.0, 2.4)) ps.push_back(q);
       return ps;
     }(),
-    .levels = {200, 400, 800},
-    .gate_levels = {200},
-    .expected_order = [](const Params&) { return std::map<std::string, double>{{"rho_post", 1.0}, {"shock_speed", 1.0}, {"swept_mass", 1.0}}; },
-    .expected_why = "shock-limited: first order in h at fixed hfact",
+    .levels = levels,
+    .orders = [](const Params&) {
+      const OrderClaim first{1.0, 0.5, "shock-limited: first order in h at fixed hfact"};
+      return OrderClaims{{"rho_post", first}, {"shock_speed", first}, {"swept_mass", first}};
+    },
+    .error_defs = {{"rho_post", "|mean rho over particles with R_s/4 < r < 3 R_s/4 - 4^d| / 4^d at t_end (exact post-shock density)"},
+                   {"shock_speed", "|R_front / t - 1/3| / (1/3), R_front where the binned density falls through the "
+                                   "midpoint of the exact post- and pre-shock densities"},
+                   {"swept_mass", "|m(v_r > -1/2) - rho0 vol(R_s + t)| / (rho0 vol(R_s + t)): gas brought to rest"}},
     .variants = {{}, {"dim=2"}, {"dim=3"}},
-    .levels_for = [](const Params& p, std::vector<long> l) {
-      // 1D 200, 400, 800; 2D 50, 70, 100; 3D 10, 14, 20 (the gate's 200 maps to the first; a 3D
-      // run at n = 10 has ~5k particles, ~40 s on one loaded core).
+    .levels_for = [](const Params& p) {
+      // 1D 200, 400, 800; 2D 50, 71, 100; 3D 10, 14, 20 (a 3D run at n = 10 has ~5k particles,
+      // ~40 s on one loaded core).
       const long d = p.integer("dim");
-      for (auto& v : l) v = d == 1 ? v : static_cast<long>(std::lround((d == 2 ? 50.0 : 10.0) * std::sqrt(v / 200.0)));
+      Levels l = levels;
+      for (auto* v : {&l.quick, &l.standard, &l.full})
+        for (auto& n : *v) n = d == 1 ? n : static_cast<long>(std::lround((d == 2 ? 50.0 : 10.0) * std::sqrt(n / 200.0)));
       return l;
     },
     .validate = validate,

@@ -94,15 +94,3 @@ TEST_CASE("evrard: bad input is refused", "[evrard]") {
   for (const char* bad : {"eps=0", "theta=0", "theta=2", "t_end=-1", "gamma=1", "n=10", "zones=5", "u0=0"})
     CHECK_THROWS_AS(c.parse({bad}), sphv::InputError);
 }
-
-TEST_CASE("gate: evrard", "[gate][evrard]") {
-  const auto& c = sphv::find_case("evrard");
-  for (const auto& settings : c.variants) {
-    auto s = sphv::run_sweep(c, c.sweep_levels(settings, true), settings);
-    for (const auto& ch : s.checks) {
-      INFO("evrard [" << s.variant() << "] " << ch.name << " = " << ch.value << " in [" << ch.lo << ", " << ch.hi
-                      << "]: " << ch.why);
-      CHECK(ch.pass());
-    }
-  }
-}

@@ -6,25 +6,6 @@
 #include "reference/cvode.hpp"
 #include "verification/sweep.hpp"
 
-namespace {
-void gate(const std::string& name) {
-  const auto& c = sphv::find_case(name);
-  for (const auto& settings : c.variants) {
-    auto s = sphv::run_sweep(c, c.gate_levels, settings);
-    for (const auto& ch : s.checks) {
-      INFO(name << " [" << s.variant() << "] " << ch.name << " = " << ch.value << " in [" << ch.lo << ", " << ch.hi
-                << "]: " << ch.why);
-      CHECK(ch.pass());
-    }
-  }
-}
-}  // namespace
-
-TEST_CASE("gate: laplacian", "[gate][laplacian]") { gate("laplacian"); }
-TEST_CASE("gate: heat", "[gate][heat]") { gate("heat"); }
-TEST_CASE("gate: heat_stability", "[gate][heat]") { gate("heat_stability"); }
-TEST_CASE("gate: heat_stiff", "[gate][heat]") { gate("heat_stiff"); }
-
 TEST_CASE("heat: bad input is refused", "[heat][input]") {
   const auto& c = sphv::find_case("heat");
   CHECK_THROWS_AS(c.parse({"K=-1"}), sphv::InputError);

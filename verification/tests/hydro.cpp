@@ -17,19 +17,6 @@
 
 namespace {
 
-void require_gates(const std::string& name, bool all_variants) {
-  const auto& c = sphv::find_case(name);
-  const auto variants = all_variants ? c.variants : std::vector<std::vector<std::string>>{{}};
-  for (const auto& settings : variants) {
-    const auto s = sphv::run_sweep(c, c.gate_levels, settings);
-    for (const auto& ch : s.checks) {
-      INFO(name << " [" << s.variant() << "] " << ch.name << " = " << ch.value << " in [" << ch.lo << ", " << ch.hi
-                << "]: " << ch.why);
-      CHECK(ch.pass());
-    }
-  }
-}
-
 // A disordered, moving 2D gas in a periodic box: jittered lattice, random velocities of about
 // half the sound speed, internal energy varying by +-50 %; every interaction is active.
 sph::Particles<2> stirred_gas(std::uint64_t seed) {
@@ -182,6 +169,3 @@ TEST_CASE("extreme Riemann presets end with a verdict, never NaN", "[hydro][extr
   }
 }
 
-TEST_CASE("gate: sod", "[gate][sod]") { require_gates("sod", true); }
-TEST_CASE("gate: sod2d", "[gate][sod2d]") { require_gates("sod2d", false); }
-TEST_CASE("gate: sod3d", "[gate][sod3d]") { require_gates("sod3d", false); }
