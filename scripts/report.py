@@ -1,316 +1,371 @@
 #!/usr/bin/env python3
-"""Turns a folder of sphv results into reports/<name>/: index.html, every figure as PNG and
-vector PDF, tables.tex (errors, observed orders, GCI) and the verdict summary.
+"""Turns a folder of sphv results into a report a reader can use: reports/<name>/index.html (the
+summary: per case and variant each error's outcome), one page per case (the claim, every check
+labelled verification or drift, figures, the files behind every point) and, when a kill matrix
+exists, a page on the mutation tests. Every figure is PNG and vector PDF; each point's
+result.json, log and particle CSV are copied (or hard-linked) under data/, so the folder can be
+moved as a whole.
 
-usage: report.py RESULTS_DIR [--name NAME] [--reports DIR] [--bundle DIR]
-RESULTS_DIR holds CASE/VARIANT/sweep.json as `sphv verify` writes them (a single sweep
-folder with sweep.json works too). --bundle also writes a publication bundle: figures as
-PDF, tables.tex, verification.tex (to \\input in a paper), provenance.json and
-reproduce.sh with the exact commands behind every number."""
+usage: report.py RESULTS_DIR [--name NAME] [--reports DIR] [--mutants FILE] [--bundle DIR [--allow-dirty]]
+RESULTS_DIR holds summary.json and CASE/[VARIANT/]sweep.json as `sphv verify --out` writes them,
+or the sweep.json files of `sphv sweep`, or bench.json of `sphv bench` (a benchmark page). --bundle also writes a publication bundle
+(verification.tex, verification-supplement.tex, figures, provenance.json, reproduce.sh)."""
 import argparse
 import html
-import json
-import math
 import os
+import shutil
 import sys
+from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
+from urllib.parse import quote
 
-import matplotlib
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+import report_figures as figs  # noqa: E402
+from report_data import (counts, errors_of, expected_text, fmt, is_dirty, load, num, order_text,  # noqa: E402
+                         provenances, read_json, row_reason, slug, sweep_wide_failures)
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
-
-
-def load_sweeps(root):
-    files = sorted(root.glob("**/sweep.json"))
-    if not files and not (root / "bench.json").exists():
-        sys.exit(f"report.py: error: no sweep.json or bench.json under {root}")
-    sweeps = {}
-    for f in files:
-        s = json.loads(f.read_text())
-        sweeps.setdefault(s["case"], []).append(s)
-    for runs in sweeps.values():  # the default variant first
-        runs.sort(key=lambda s: (s["variant"] != "default", s["variant"]))
-    return sweeps
+ROOT = Path(__file__).resolve().parent.parent
+CSS = """body{font-family:sans-serif;max-width:1250px;margin:auto;padding:0 12px;line-height:1.35}
+table{border-collapse:collapse;margin:8px 0}td,th{border:1px solid #ccc;padding:2px 6px;font-size:13px;vertical-align:top}
+th{background:#f2f2f2;text-align:left}td.num{text-align:right;white-space:nowrap}tr.first td{border-top:2px solid #888}
+.verified{color:#060}.noclaim{color:#845b00}.fail{color:#b00;font-weight:bold}.drift{color:#666}
+.counts span{display:inline-block;margin-right:18px;font-size:18px}.why{font-size:12px;color:#333;min-width:260px;max-width:480px}
+div.figs{display:flex;flex-wrap:wrap;gap:8px}figure{margin:0;width:600px}figcaption{font-size:12px}
+img{max-width:100%;border:1px solid #ddd}.prov{font-size:12px;color:#333}p.claim{font-size:15px;background:#f6f8fa;padding:8px}"""
+CLS = {"verified": "verified", "no order claimed": "noclaim", "fail": "fail"}
 
 
-def finite(v):
-    return v is not None and isinstance(v, (int, float)) and math.isfinite(v) and v > 0
+def e(text):
+    return html.escape(str(text), quote=True)
 
 
-def save(fig, out, stem):
-    fig.tight_layout()
-    for ext in ("png", "pdf"):
-        fig.savefig(out / f"{stem}.{ext}", dpi=110)
-    plt.close(fig)
-    return f"{stem}.png"
+def page(title, body):
+    return (f"<!doctype html><html><head><meta charset='utf-8'><title>{e(title)}</title><style>{CSS}</style>"
+            f"</head><body>{body}</body></html>\n")
 
 
-def errors_with_orders(s):
-    """Errors with an expected order first, then the others (floors are shown, not hidden)."""
-    names = list(s["expected_order"]) + sorted(set(s["observed_order"]) - set(s["expected_order"]))
-    return [e for e in names if any(finite(r["errors"].get(e)) for r in s["runs"])]
+def outcome_cell(outcome):
+    return f"<td class='{CLS.get(outcome, 'fail')}'>{e(outcome)}</td>"
 
 
-def convergence_figure(case, s, out, stem):
-    fig, ax = plt.subplots(figsize=(6, 4.2))
-    n = np.array([r["params"]["n"] for r in s["runs"]], float)
-    for k, e in enumerate(errors_with_orders(s)):
-        y = np.array([r["errors"].get(e) if finite(r["errors"].get(e)) else np.nan for r in s["runs"]], float)
-        ok = np.isfinite(y)
-        if ok.sum() == 0:
-            continue
-        col = f"C{k}"
-        p_obs = s["observed_order"].get(e)
-        p_exp = s["expected_order"].get(e)
-        label = f"{e}: observed {p_obs:.2f}" if p_obs is not None else e
-        if p_exp is not None:
-            label += f" (expected {p_exp:g})"
-        ax.loglog(n[ok], y[ok], "o", color=col, label=label)
-        if ok.sum() >= 2 and p_obs is not None:  # the least-squares fit
-            c = np.mean(np.log(y[ok]) + p_obs * np.log(n[ok]))
-            ax.loglog(n[ok], np.exp(c - p_obs * np.log(n[ok])), "-", color=col, lw=1)
-        if p_exp is not None:  # expected-order guide through the finest point
-            i = np.where(ok)[0][-1]
-            ax.loglog(n[ok], y[i] * (n[ok] / n[i]) ** (-p_exp), ":", color=col, lw=1)
-    ax.set_xlabel(f"resolution n")
-    ax.set_ylabel("error (relative or L1, see case)")
-    ax.set_title(f"{case} [{s['variant']}]: error against resolution\n(solid: fit, dotted: expected order)", fontsize=9)
-    ax.legend(fontsize=7)
-    ax.grid(True, which="both", alpha=0.3)
-    return save(fig, out, stem)
+def order_cell(row):
+    """The observed order; greyed where no order is claimed (shown for information, not judged)."""
+    if num(row.get("expected")):
+        return f"<td class='num'>{e(order_text(row))}</td>"
+    return f"<td class='num drift' title='no order claimed: the fit is shown for information only'>{e(order_text(row))}</td>"
 
 
-def headline(s):
-    names = errors_with_orders(s)
-    return names[0] if names else None
+def case_page_name(case):
+    return f"case-{slug(case)}.html"
 
 
-def work_precision_figure(case, sweeps, out, stem):
-    fig, ax = plt.subplots(figsize=(6, 4.2))
-    drawn = False
-    e = headline(sweeps[0])
-    for k, s in enumerate(sweeps):
-        pts = [(r["wall_time_s"], r["errors"].get(e)) for r in s["runs"] if finite(r["errors"].get(e)) and r["wall_time_s"] > 0]
-        if pts:
-            t, y = zip(*pts)
-            ax.loglog(t, y, "o-", color=f"C{k % 10}", label=s["variant"])
-            drawn = True
-    if not drawn:
-        plt.close(fig)
-        return None
-    ax.set_xlabel("wall time per run [s]")
-    ax.set_ylabel(f"{e}")
-    ax.set_title(f"{case}: error against run time, one line per variant", fontsize=9)
-    ax.legend(fontsize=7)
-    ax.grid(True, which="both", alpha=0.3)
-    return save(fig, out, stem)
+def variant_anchor(s):
+    return f"v-{slug(s['variant'])}"
 
 
-def run_figure(f, title_suffix, out, stem):
-    fig, ax = plt.subplots(figsize=(6, 4.2))
-    for k, srs in enumerate(f["series"]):
-        x = np.array([v if v is not None else np.nan for v in srs["x"]], float)
-        y = np.array([v if v is not None else np.nan for v in srs["y"]], float)
-        marker = "o" if len(x) <= 12 else None  # short series (sweeps, benchmarks) show their points
-        style = {"points": dict(ls="none", marker=".", ms=3), "dashed": dict(ls="--", marker=marker, ms=3),
-                 "line": dict(ls="-", marker=marker, ms=3)}
-        ax.plot(x, y, label=srs["label"], color=f"C{k % 10}", **style.get(srs["style"], {}))
-    ax.set_xscale(f["xscale"])
-    ax.set_yscale(f["yscale"])
-    ax.set_xlabel(f["xlabel"])
-    ax.set_ylabel(f["ylabel"])
-    ax.set_title(f"{f['title']}{title_suffix}", fontsize=9)
-    if f["series"]:
-        ax.legend(fontsize=7)
-    ax.grid(True, alpha=0.3)
-    return save(fig, out, stem)
+def link_file(src, dst):
+    """Hard link (no copy of large particle files) where the file system allows, else a copy."""
+    dst.parent.mkdir(parents=True, exist_ok=True)
+    try:
+        os.link(src, dst)
+    except OSError:
+        shutil.copy2(src, dst)
 
 
-def fmt(v, spec=".3e"):
-    return format(v, spec) if isinstance(v, (int, float)) and math.isfinite(v) else "-"
+def point_files(results, out, s):
+    """Copies what stands behind each point into out/data and returns, per level, the links."""
+    links = []
+    for n in s["levels"]:
+        src = results / s["_dir"] / f"n{n}"
+        have = []
+        for name in ("result.json", "particles.csv", "log.txt"):
+            if (src / name).is_file():
+                rel = Path("data") / s["_dir"] / f"n{n}" / name
+                link_file(src / name, out / rel)
+                have.append((name, rel.as_posix()))
+        links.append(have)
+    if (results / s["_dir"] / "sweep.json").is_file():
+        link_file(results / s["_dir"] / "sweep.json", out / "data" / s["_dir"] / "sweep.json")
+    return links
 
 
-def tex_escape(s):
-    out = str(s).replace("\\", "/")
-    for a, b in (("{", r"\{"), ("}", r"\}"), ("_", r"\_"), ("%", r"\%"), ("&", r"\&"), ("#", r"\#"),
-                 ("$", r"\$"), ("^", r"\^{}"), ("~", r"\~{}"), ("<", r"$<$"), (">", r"$>$")):
-        out = out.replace(a, b)
-    return out
+def provenance_html(sweeps, tier):
+    provs = provenances(sweeps)
+    keys = ["git_commit", "build_type", "compiler", "cxx_flags", "host", "cpu", "cores", "threads"]
+    parts = [f"<b>tier</b> {e(tier)}"]
+    for k in keys:
+        vals = sorted({str(p.get(k)) for p in provs if k in p})
+        if vals:
+            parts.append(f"<b>{e(k)}</b> {e(' | '.join(vals))}" + (" <span class='fail'>(mixed)</span>" if len(vals) > 1 else ""))
+    dirty = sum(is_dirty(p) for p in provs)
+    parts.append(f"<b>tree</b> <span class='fail'>dirty in {dirty} of {len(provs)} runs</span>" if dirty else
+                 "<b>tree</b> clean (no run records uncommitted changes)")
+    dates = sorted(str(p["date"]) for p in provs if "date" in p)
+    if dates:
+        parts.append(f"<b>run</b> {e(dates[0])} to {e(dates[-1])}")
+    return "<p class='prov'>" + "; ".join(parts) + ".</p>"
 
 
-def reproduce_command(s):
-    prov = s["runs"][0].get("provenance", {})
-    levels = ",".join(str(r["params"]["n"]) for r in s["runs"])
-    sets = "".join(f" --set {kv}" for kv in s["settings"])
-    return (f"build/sphv --threads {prov.get('threads', 1)} sweep {s['case']} --levels {levels}{sets} "
-            f"--jobs 1 --out runs/bundle/{s['case']}/{s['variant']}")
-
-
-def write_bundle(bundle, sweeps, report_dir, tables_tex):
-    import shutil
-    import subprocess
-    figs = bundle / "figures"
-    figs.mkdir(parents=True, exist_ok=True)
-    for pdf in report_dir.glob("*.pdf"):
-        shutil.copy(pdf, figs / pdf.name)
-    (bundle / "tables.tex").write_text(tables_tex)
-    first = next(iter(sweeps.values()))[0]["runs"][0]
-    prov = dict(first.get("provenance", {}))
-    prov["uname"] = " ".join(os.uname())
-    prov["commands"] = [reproduce_command(s) for ss in sweeps.values() for s in ss]
-    (bundle / "provenance.json").write_text(json.dumps(prov, indent=1) + "\n")
-    (bundle / "reproduce.sh").write_text(
-        "#!/usr/bin/env bash\n# Re-runs every sweep behind the bundle (from the repository root, at commit "
-        f"{prov.get('git_commit')}), then rebuilds the report and this bundle.\nset -e\n"
-        "bash scripts/build.sh\n" + "\n".join(prov["commands"]) +
-        "\n/usr/bin/python3 scripts/report.py runs/bundle --name bundle --bundle bundle\n")
-    t = [r"% Generated by scripts/report.py --bundle; \input{verification} in a paper (needs graphicx).",
-         r"\section{Verification}",
-         "All numbers below were produced by sphv at commit \\texttt{" + tex_escape(prov.get("git_commit")) +
-         "}, compiled by " + tex_escape(prov.get("compiler")) + " (" + tex_escape(prov.get("build_type")) +
-         ", flags \\texttt{" + tex_escape(prov.get("cxx_flags", "").strip()) + "}) on " +
-         tex_escape(prov.get("cpu")) + " with " + str(prov.get("threads")) + " OpenMP threads, " +
-         tex_escape(prov.get("date")) + ". The commands that reproduce every number are in \\texttt{reproduce.sh}. "
-         "Observed orders are least-squares slopes of $\\log$ error against $\\log n$; GCI is Roache's grid "
-         "convergence index of the finest pair ($F_s = 1.25$ with three or more levels).", ""]
+def summary_table(sweeps, missing):
+    t = ["<table><tr><th>case</th><th>variant</th><th>error</th><th>finest n</th><th>error at finest n</th>"
+         "<th>observed order ± s.e.</th><th>expected ± band</th><th>outcome</th><th>reason</th><th>sweep wall s</th></tr>"]
     for case, ss in sorted(sweeps.items()):
-        s0 = ss[0]
-        t += [r"\subsection{" + tex_escape(case) + "}", tex_escape(s0.get("summary", "")) + ". Resolution $n$: " +
-              tex_escape(s0.get("n_counts", "")) + ". Expected orders: " + tex_escape(s0.get("expected_why", "")) + ".", "",
-              r"\begin{center}\begin{tabular}{llrrrr}\hline",
-              r"variant & error & levels $n$ & error at finest & observed order & expected \\ \hline"]
         for s in ss:
-            lv = [r["params"]["n"] for r in s["runs"]]
-            for e in errors_with_orders(s):
-                t.append(f"{tex_escape(s['variant'])} & {tex_escape(e)} & {lv[0]}--{lv[-1]} & {fmt(s['runs'][-1]['errors'].get(e))} & "
-                         f"{fmt(s['observed_order'].get(e), '.2f')} & {fmt(s['expected_order'].get(e), 'g')} \\\\")
-        t += [r"\hline\end{tabular}\end{center}"]
-        gci = [(s["variant"], k, g) for s in ss for k, g in s["gci"].items()]
-        if gci:
-            t.append("GCI: " + "; ".join(f"{tex_escape(v)} {tex_escape(k)} = {fmt(g['fine_value'], '.6g')} "
-                                         f"$\\pm$ {fmt(g['gci'], '.2e')} (relative)" for v, k, g in gci) + ".")
-        checks = [c for s in ss for c in s["checks"]]
-        t.append(f"Gates: {sum(c['pass'] for c in checks)} of {len(checks)} checks pass.")
-        for pdf in sorted(figs.glob(f"{case}_*.pdf")):
-            t += [r"\begin{figure}[htbp]\centering", r"\includegraphics[width=0.7\linewidth]{figures/" + pdf.name + "}",
-                  r"\caption{" + tex_escape(case) + ": " + tex_escape(pdf.stem.split("_", 2)[-1].replace("_", " ")) + ".}",
-                  r"\end{figure}"]
-        t.append(r"\clearpage")
-    (bundle / "verification.tex").write_text("\n".join(t) + "\n")
-    (bundle / "example.tex").write_text("\\documentclass{article}\n\\usepackage{graphicx}\n\\begin{document}\n"
-                                        "\\input{verification}\n\\end{document}\n")
-    if shutil.which("pdflatex"):
-        res = subprocess.run(["pdflatex", "-interaction=nonstopmode", "-halt-on-error", "example.tex"], cwd=bundle,
-                             capture_output=True, text=True)
-        print("bundle: example.tex " + ("compiles" if res.returncode == 0 else "FAILS to compile: see example.log"))
+            href = f"{case_page_name(case)}#{variant_anchor(s)}"
+            rows = s["rows"] or [None]
+            wide = sweep_wide_failures(s)
+            for k, row in enumerate(rows):
+                head = (f"<td><a href='{e(href)}'>{e(case)}</a></td><td>{e(s['variant'])}</td>" if k == 0 else "<td></td><td></td>")
+                tail = f"<td class='num'>{fmt(s.get('wall_time_s'), '.2f')}</td>" if k == 0 else "<td></td>"
+                first = " class='first'" if k == 0 else ""
+                if row is None:
+                    t.append(f"<tr{first}>{head}<td colspan=5>no error rows (checks only)</td>"
+                             f"<td class='{'fail' if not s['passed'] else ''}'>{'fail' if not s['passed'] else 'pass'}</td>"
+                             f"<td class='why'>{e('failed: ' + ', '.join(wide)) if wide else ''}</td>{tail}</tr>")
+                    continue
+                reason = row_reason(s, row)
+                if k == 0 and wide:
+                    reason += "; sweep-wide failed: " + ", ".join(wide)
+                t.append(f"<tr{first}>{head}<td>{e(row['error'])}</td><td class='num'>{s['levels'][-1] if s['levels'] else '–'}</td>"
+                         f"<td class='num'>{fmt(row.get('fine_value'))}</td>{order_cell(row)}"
+                         f"<td class='num'>{e(expected_text(row))}</td>{outcome_cell(row['outcome'])}"
+                         f"<td class='why'>{e(reason)}</td>{tail}</tr>")
+    for m in missing:
+        t.append(f"<tr class='first'><td>{e(m['case'])}</td><td>{e(m['variant'])}</td><td colspan=5>in summary.json but no "
+                 f"sweep.json was written</td><td class='fail'>fail</td><td></td><td class='num'>{fmt(m.get('wall_time_s'), '.2f')}</td></tr>")
+    return "".join(t) + "</table>"
+
+
+def index_page(name, sweeps, missing, tier, mutants_link):
+    c = counts(sweeps)
+    n_sweeps = sum(len(ss) for ss in sweeps.values())
+    failing = sum(not s["passed"] for ss in sweeps.values() for s in ss) + len(missing)
+    wall = sum(s.get("wall_time_s", 0) for ss in sweeps.values() for s in ss)
+    body = [f"<h1>sphv verification report: {e(name)}</h1>", provenance_html(sweeps, tier),
+            "<p class='counts'>"
+            f"<span class='verified'>{c['verified']} verified</span>"
+            f"<span class='noclaim'>{c['no order claimed']} no order claimed</span>"
+            f"<span class='fail'>{c['fail']} fail</span></p>",
+            f"<p>{len(sweeps)} cases, {n_sweeps} case variants ({failing} failing), summed run time {wall:.1f} s. "
+            "Each row is one error of one case variant at its finest level. <b>verified</b>: the observed order lies in "
+            "the expected band (widened by two standard errors of the fit) and the error is under its bound; "
+            "<b>no order claimed</b>: the case says why (the reason column) and its other checks pass; <b>fail</b>: a "
+            "check on that error failed. Click a case for its claim, every check and the figures.</p>"]
+    if mutants_link:
+        body.append(f"<p><a href='{mutants_link}'>Mutation testing: which seeded faults the gates catch</a></p>")
+    body.append(summary_table(sweeps, missing))
+    return page(f"sphv report: {name}", "".join(body))
+
+
+def claim_sentence(case, ss):
+    s = ss[0]
+    claimed = [f"{e(r['error'])} converges at order {r['expected']:g} ± {r.get('band', 0):g}"
+               for r in s["rows"] if num(r.get("expected"))]
+    no_claim = [r["error"] for r in s["rows"] if not num(r.get("expected"))]
+    text = f"<b>{e(case)}</b>: {e(s.get('summary', ''))}. "
+    if claimed:
+        text += f"Claim ({e(s['variant'])} variant): " + ", ".join(claimed) + f" in n ({e(s.get('n_counts', ''))}), each under its bound"
+        text += f"; no order claimed for {e(', '.join(no_claim))}." if no_claim else "."
+    elif no_claim:
+        text += f"No order is claimed ({e(', '.join(no_claim))}): the checks bound the errors themselves."
+    c = {k: sum(r["outcome"] == k for s in ss for r in s["rows"]) for k in ("verified", "no order claimed", "fail")}
+    text += (f" Over {len(ss)} variant{'s' if len(ss) > 1 else ''}: {c['verified']} verified, "
+             f"{c['no order claimed']} no order claimed, {c['fail']} fail.")
+    return f"<p class='claim'>{text}</p>"
+
+
+def claim_why(s, row):
+    """The case's reason for its order claim, under the outcome's reason (not repeated)."""
+    why = s.get("claims", {}).get(row["error"], {}).get("why", "")
+    return f"<br><i>claim:</i> {e(why)}" if why and why != row_reason(s, row) else ""
+
+
+def check_rows(s, checks):
+    return "".join(
+        f"<tr><td>{e(c['name'])}</td><td>{e(c.get('error') or '(whole sweep)')}</td>"
+        f"<td class='{'drift' if c.get('kind') == 'drift' else ''}'>{e(c.get('kind', 'verification'))}</td>"
+        f"<td class='num'>{fmt(c.get('value'), '.4g')}</td><td class='num'>[{fmt(c.get('lo'), '.4g')}, {fmt(c.get('hi'), '.4g')}]</td>"
+        f"<td class='{'verified' if c['pass'] else 'fail'}'>{'pass' if c['pass'] else 'FAIL'}</td><td class='why'>{e(c.get('why', ''))}</td></tr>"
+        for c in checks)
+
+
+def figure_html(out, stem, caption):
+    png, pdf = (quote(stem.with_suffix(x).relative_to(out).as_posix()) for x in (".png", ".pdf"))
+    return (f"<figure><a href='{e(png)}'><img src='{e(png)}' alt='{e(caption)}'></a>"
+            f"<figcaption>{e(caption)} (<a href='{e(pdf)}'>PDF</a>)</figcaption></figure>")
+
+
+def case_page(case, ss, results, out, made):
+    figdir = out / "fig" / slug(case)
+    body = ["<p><a href='index.html'>&larr; summary of all cases</a></p>", f"<h1>{e(case)}</h1>", claim_sentence(case, ss)]
+    defs = {}
+    for s in ss:
+        for k, v in s.get("error_defs", {}).items():
+            defs.setdefault(k, v)
+    if defs:
+        body.append("<table><tr><th>error</th><th>definition</th></tr>" +
+                    "".join(f"<tr><td>{e(k)}</td><td>{e(v)}</td></tr>" for k, v in defs.items()) + "</table>")
+    tier = ss[0].get("tier") or "none (levels given on the command line)"
+    body.append(f"<p>n: {e(ss[0].get('n_counts', ''))}. Tier: {e(tier)}.</p>")
+
+    body.append("<h2>Outcome per error</h2><table><tr><th>variant</th><th>error</th><th>levels n</th><th>error at finest n</th>"
+                "<th>observed ± s.e.</th><th>expected ± band</th><th>outcome</th><th>why / what it rests on</th></tr>")
+    for s in ss:
+        for k, row in enumerate(s["rows"]):
+            body.append(f"<tr{' class=first' if k == 0 else ''}><td>{e(s['variant']) if k == 0 else ''}</td><td>{e(row['error'])}</td>"
+                        f"<td>{e(', '.join(map(str, s['levels'])))}</td><td class='num'>{fmt(row.get('fine_value'))}</td>"
+                        f"{order_cell(row)}<td class='num'>{e(expected_text(row))}</td>{outcome_cell(row['outcome'])}"
+                        f"<td class='why'>{e(row_reason(s, row))}{claim_why(s, row)}</td></tr>")
+    body.append("</table>")
+
+    body.append("<h2>Every check</h2><p><b>verification</b>: against an independent reference (analytic solution, exact "
+                "solver, SUNDIALS, direct sum, published table). <b>drift</b>: against the code's own earlier output "
+                "(reference/baselines), which only shows that nothing changed.</p>")
+    head = "<tr><th>check</th><th>error</th><th>kind</th><th>value</th><th>allowed</th><th></th><th>why</th></tr>"
+    for s in ss:
+        ver = [c for c in s["checks"] if c.get("kind", "verification") != "drift"]
+        drift = [c for c in s["checks"] if c.get("kind") == "drift"]
+        body.append(f"<h3 id='{variant_anchor(s)}'>{e(s['variant'])}: {'passed' if s['passed'] else '<span class=fail>FAILED</span>'}</h3>")
+        body.append(f"<table>{head}{check_rows(s, ver)}</table>" if ver else "<p>No verification check.</p>")
+        if drift:
+            bad = sum(not c["pass"] for c in drift)
+            body.append(f"<details{' open' if bad else ''}><summary>{len(drift)} drift checks, {bad} failing</summary>"
+                        f"<table>{head}{check_rows(s, drift)}</table></details>")
+        if s.get("gci"):
+            body.append("<p>Roache's grid convergence index of the finest pair:</p><table><tr><th>functional</th><th>value</th>"
+                        "<th>order used</th><th>F<sub>s</sub></th><th>GCI (relative)</th></tr>" +
+                        "".join(f"<tr><td>{e(k)}</td><td class='num'>{fmt(g.get('fine_value'), '.6g')}</td>"
+                                f"<td class='num'>{fmt(g.get('order'), '.2f')}</td><td class='num'>{fmt(g.get('Fs'), 'g')}</td>"
+                                f"<td class='num'>{fmt(g.get('gci'), '.2e')}</td></tr>" for k, g in s["gci"].items()) + "</table>")
+
+    body.append("<h2>Figures</h2><p>Convergence figures only for errors with an order claim; errors without one are "
+                "tabulated per level. Each figure links its vector PDF.</p>")
+    claimed = [n for n in dict.fromkeys(r["error"] for s in ss for r in s["rows"] if num(r.get("expected")))]
+    walls = []
+    for err in claimed:
+        stem = figs.wall_time(case, ss, err, figdir / f"wall_{slug(err)}")
+        if stem:
+            made.append((case, None, err, "wall", stem))
+            walls.append(figure_html(out, stem, f"{err} against the wall time of each run, every variant"))
+    if walls:
+        body.append("<h3>Error against run time</h3><div class='figs'>" + "".join(walls) + "</div>")
+    for s in ss:
+        v = slug(s["variant"])
+        body.append(f"<h3>{e(s['variant'])}</h3><div class='figs'>")
+        for row in s["rows"]:
+            stem = figs.convergence(case, s, row, figdir / f"{v}_{slug(row['error'])}_convergence") if num(row.get("expected")) else None
+            if stem:
+                made.append((case, s, row["error"], "convergence", stem))
+                body.append(figure_html(out, stem, f"{row['error']} against n, {s['variant']}: {row['outcome']}"))
+        if s["runs"]:
+            for f in s["runs"][-1].get("figures", []):
+                stem = figs.run_figure(f, f" [{s['variant']}, n = {s['levels'][-1]}]", figdir / f"{v}_run_{slug(f['name'])}")
+                if stem:
+                    made.append((case, s, f["name"], "run", stem))
+                    body.append(figure_html(out, stem, f"{f['title']} (finest run, n = {s['levels'][-1]})"))
+        body.append("</div>")
+        unclaimed = [err for err in errors_of(s) if not any(r["error"] == err and num(r.get("expected")) for r in s["rows"])]
+        if unclaimed:
+            body.append("<table><tr><th>error (no order claimed)</th>" + "".join(f"<th>n = {n}</th>" for n in s["levels"]) + "</tr>")
+            for err in unclaimed:
+                body.append(f"<tr><td>{e(err)}</td>" + "".join(f"<td class='num'>{fmt(r.get('errors', {}).get(err), '.3e')}</td>"
+                                                            for r in s["runs"]) + "</tr>")
+            body.append("</table>")
+
+    body.append("<h2>Runs and their files</h2><table><tr><th>variant</th><th>n</th><th>particles</th><th>wall s</th>"
+                "<th>verdict</th><th>files</th></tr>")
+    for s in ss:
+        links = point_files(results, out, s)
+        for n, run, have in zip(s["levels"], s["runs"], links):
+            files = " ".join(f"<a href='{e(quote(rel))}'>{e(name)}</a>" for name, rel in have) or "(not kept)"
+            body.append(f"<tr><td>{e(s['variant'])}</td><td class='num'>{n}</td><td class='num'>{run.get('n_particles', '–')}</td>"
+                        f"<td class='num'>{fmt(run.get('wall_time_s'), '.3g')}</td><td>{e(run.get('verdict', ''))}</td><td>{files}</td></tr>")
+    body.append("</table>")
+    return page(f"sphv: {case}", "".join(body))
+
+
+def write_case_page(job):
+    case, ss, results, out = job
+    made = []
+    (out / case_page_name(case)).write_text(case_page(case, ss, results, out, made))
+    return made
+
+
+def mutants_page(km):
+    ms = km.get("mutants", [])
+    killed = sum(bool(m.get("killed")) for m in ms)
+    by_ver = sum(bool(m.get("by_verification")) for m in ms)
+    body = ["<p><a href='index.html'>&larr; summary of all cases</a></p><h1>Mutation testing</h1>",
+            f"<p>Each mutant is a realistic fault applied to a copy of the code; the gates ran against it. "
+            f"<b>{killed} of {len(ms)}</b> killed, <b>{by_ver}</b> of them by a verification check (not only a drift "
+            f"baseline); {len(ms) - killed} survived. {'Quick subset. ' if km.get('quick') else ''}"
+            f"Total wall time {fmt(km.get('total_wall_time_s'), '.0f')} s.</p>",
+            "<table><tr><th>mutant</th><th>area</th><th>fault</th><th>outcome</th><th>first failed checks (case / variant: check, kind)</th>"
+            "<th>failed tests</th><th>wall s</th></tr>"]
+    for m in ms:
+        state = (f"not run: {m['error']}", "fail") if m.get("error") else \
+                ("killed by verification", "verified") if m.get("by_verification") else \
+                ("killed by drift only", "noclaim") if m.get("killed") else ("SURVIVED", "fail")
+        checks = "<br>".join(f"{e(c.get('case'))} / {e(c.get('variant'))}: {e(c.get('check'))} "
+                             f"<span class='{'drift' if c.get('kind') == 'drift' else ''}'>({e(c.get('kind'))})</span>"
+                             for c in m.get("failed_checks", []))
+        body.append(f"<tr><td>{e(m.get('id'))}</td><td>{e(m.get('area'))}</td><td class='why'>{e(m.get('description'))}</td>"
+                    f"<td class='{state[1]}'>{state[0]}</td><td class='why'>{checks}</td>"
+                    f"<td class='why'>{e(', '.join(map(str, m.get('failed_tests', []))))}</td>"
+                    f"<td class='num'>{fmt(m.get('wall_time_s'), '.0f')}</td></tr>")
+    body.append("</table>")
+    return page("sphv: mutation testing", "".join(body))
 
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("results", type=Path)
     ap.add_argument("--name", default="verify")
-    ap.add_argument("--reports", type=Path, default=Path(__file__).resolve().parent.parent / "reports")
+    ap.add_argument("--reports", type=Path, default=ROOT / "reports")
+    ap.add_argument("--mutants", type=Path, help="kill matrix (default runs/mutants/kill_matrix.json if it exists)")
     ap.add_argument("--bundle", type=Path, help="also write a publication bundle to this folder")
+    ap.add_argument("--allow-dirty", action="store_true", help="bundle results whose provenance records uncommitted changes")
     a = ap.parse_args()
     if not a.results.is_dir():
-        sys.exit(f"report.py: error: {a.results} is not a directory")
-    sweeps = load_sweeps(a.results)
+        print(f"report.py: error: {a.results} is not a directory", file=sys.stderr)
+        sys.exit(2)
     out = a.reports / a.name
+    if (a.results / "bench.json").is_file() and not any(a.results.glob("**/sweep.json")):  # scripts/bench.sh
+        import report_bench
+        shutil.rmtree(out / "fig", ignore_errors=True)
+        out.mkdir(parents=True, exist_ok=True)
+        (out / "index.html").write_text(page("sphv benchmarks", report_bench.bench_body(a.results, out)))
+        print(f"report: {out / 'index.html'} (benchmarks)")
+        return
+    sweeps, missing, tier = load(a.results)
+    dirty = sum(is_dirty(p) for p in provenances(sweeps))
+    if a.bundle and dirty and not a.allow_dirty:
+        print(f"report.py: error: {dirty} of {len(provenances(sweeps))} runs under {a.results} were produced from a tree "
+              "with uncommitted changes (their provenance says so): commit, rerun, or pass --allow-dirty", file=sys.stderr)
+        sys.exit(2)
+    for old in ("fig", "data"):  # a report is rewritten whole: nothing stale from an earlier one
+        shutil.rmtree(out / old, ignore_errors=True)
+    for old in out.glob("*.html"):
+        old.unlink()
     out.mkdir(parents=True, exist_ok=True)
 
-    rows, tex_rows, body = [], [], []
-    for case, ss in sorted(sweeps.items()):
-        body.append(f"<h2 id='{case}'>{html.escape(case)}</h2>")
-        imgs = []
-        for k, s in enumerate(ss):
-            imgs.append(convergence_figure(case, s, out, f"{case}_{k}_convergence"))
-        wp = work_precision_figure(case, ss, out, f"{case}_work_precision")
-        if wp:
-            imgs.append(wp)
-        for k, s in enumerate(ss):
-            finest = s["runs"][-1]
-            for f in finest["figures"]:
-                suffix = f" [{s['variant']}, n={finest['params']['n']}]"
-                imgs.append(run_figure(f, suffix, out, f"{case}_{k}_{f['name']}"))
-        body.append("".join(f"<a href='{i}'><img src='{i}' width='480'></a>" for i in imgs))
-        body.append("<table><tr><th>variant</th><th>error</th><th>n</th><th>value</th><th>observed</th>"
-                    "<th>expected</th><th>wall s</th></tr>")
-        for s in ss:
-            for e in errors_with_orders(s):
-                for r in s["runs"]:
-                    body.append(f"<tr><td>{html.escape(s['variant'])}</td><td>{e}</td><td>{r['params']['n']}</td>"
-                                f"<td>{fmt(r['errors'].get(e))}</td><td>{fmt(s['observed_order'].get(e), '.2f')}</td>"
-                                f"<td>{fmt(s['expected_order'].get(e), 'g')}</td><td>{fmt(r['wall_time_s'], '.3g')}</td></tr>")
-                fine = s["runs"][-1]
-                tex_rows.append(f"{tex_escape(case)} & {tex_escape(s['variant'])} & {tex_escape(e)} & {fine['params']['n']} & "
-                                f"{fmt(fine['errors'].get(e))} & {fmt(s['observed_order'].get(e), '.2f')} & "
-                                f"{fmt(s['expected_order'].get(e), 'g')} \\\\")
-        body.append("</table>")
-        if any(s["gci"] for s in ss):
-            body.append("<p>Roache's grid convergence index (finest pair):</p><table><tr><th>variant</th><th>functional</th>"
-                        "<th>value</th><th>order</th><th>Fs</th><th>GCI</th></tr>")
-            for s in ss:
-                for k, g in s["gci"].items():
-                    body.append(f"<tr><td>{html.escape(s['variant'])}</td><td>{k}</td><td>{fmt(g['fine_value'], '.6g')}</td>"
-                                f"<td>{fmt(g['order'], '.2f')}</td><td>{g['Fs']}</td><td>{fmt(g['gci'])}</td></tr>")
-            body.append("</table>")
-        body.append("<p>Gates:</p><table><tr><th>variant</th><th>check</th><th>value</th><th>bounds</th><th>why</th><th></th></tr>")
-        for s in ss:
-            for c in s["checks"]:
-                body.append(f"<tr><td>{html.escape(s['variant'])}</td><td>{html.escape(c['name'])}</td><td>{fmt(c['value'], '.4g')}</td>"
-                            f"<td>[{fmt(c['lo'], 'g')}, {fmt(c['hi'], 'g')}]</td><td>{html.escape(c['why'])}</td>"
-                            f"<td class='{'pass' if c['pass'] else 'fail'}'>{'pass' if c['pass'] else 'FAIL'}</td></tr>")
-            verdicts = sorted({r["verdict"] for r in s["runs"]})
-            rows.append((case, s["variant"], s["passed"], ", ".join(verdicts), s["wall_time_s"]))
-        body.append("</table>")
-
-    bench_file = a.results / "bench.json"
-    if bench_file.exists():
-        b = json.loads(bench_file.read_text())
-        pr = b["provenance"]
-        body.append(f"<h2 id='bench'>Benchmarks</h2><p>{html.escape(b['benchmark'])}; {html.escape(str(pr.get('cpu')))}, "
-                    f"{pr.get('cores')} cores, build {html.escape(str(pr.get('build_type')))} "
-                    f"({html.escape(str(pr.get('cxx_flags')))}), {html.escape(str(pr.get('compiler')))}. "
-                    "Benchmarks, not tests: nothing fails on a time.</p>")
-        body.append("".join(f"<img src='{run_figure(f, '', out, f['name'])}' width='560'>" for f in b["figures"]))
-        body.append("<table><tr><th>stage</th><th>N</th><th>threads</th><th>seconds</th><th>particle updates/s</th>"
-                    "<th>pair interactions/s</th></tr>")
-        for r in b["rows"]:
-            body.append(f"<tr><td>{html.escape(r['stage'])}</td><td>{r['n']}</td><td>{r['threads']}</td><td>{fmt(r['seconds'], '.4g')}</td>"
-                        f"<td>{fmt(r['particle_updates_per_s'])}</td><td>{fmt(r['pairs_per_s'])}</td></tr>")
-        body.append("</table><p>Fitted cost slopes (time ~ N^slope): " +
-                    ", ".join(f"{html.escape(k)} {fmt(v, '.2f')}" for k, v in b["fitted_slopes"].items()) +
-                    ". Bytes per particle (hydro state + neighbour list, counted): " +
-                    ", ".join(f"N={k}: {v:.0f}" for k, v in b["bytes_per_particle"].items()) +
-                    "; peak resident memory per particle (measured, whole process): " +
-                    ", ".join(f"N={k}: {v:.0f}" for k, v in b.get("peak_resident_bytes_per_particle", {}).items()) + ".</p>")
-
-    summary = ["<table><tr><th>case</th><th>variant</th><th>gates</th><th>run verdicts</th><th>sweep wall s</th></tr>"]
-    for case, variant, passed, verdicts, wall in rows:
-        summary.append(f"<tr><td><a href='#{case}'>{case}</a></td><td>{html.escape(variant)}</td>"
-                       f"<td class='{'pass' if passed else 'fail'}'>{'pass' if passed else 'FAIL'}</td>"
-                       f"<td>{html.escape(verdicts)}</td><td>{wall:.2f}</td></tr>")
-    summary.append("</table>")
-    prov = next(iter(sweeps.values()))[0]["runs"][0].get("provenance", {}) if sweeps else {}
-    prov_html = ", ".join(f"{k}: {html.escape(str(v))}" for k, v in prov.items())
-    page = f"""<!doctype html><html><head><meta charset='utf-8'><title>sphv report: {a.name}</title>
-<style>body{{font-family:sans-serif;max-width:1500px;margin:auto}} table{{border-collapse:collapse;margin:8px 0}}
-td,th{{border:1px solid #ccc;padding:2px 6px;font-size:13px}} .pass{{color:#070}} .fail{{color:#b00;font-weight:bold}}</style>
-</head><body><h1>sphv verification report: {a.name}</h1><p>{prov_html}</p>
-<h2>Summary of verdicts</h2>{''.join(summary)}{''.join(body)}
-<p>Every figure is also saved as vector PDF beside its PNG; LaTeX tables: <a href='tables.tex'>tables.tex</a>.</p>
-</body></html>"""
-    (out / "index.html").write_text(page)
-    tex = ["% Generated by scripts/report.py", r"\begin{tabular}{lllrrrr}", r"\hline",
-           r"case & variant & error & $n$ & error at $n$ & observed order & expected order \\", r"\hline",
-           *tex_rows, r"\hline", r"\end{tabular}", ""]
-    (out / "tables.tex").write_text("\n".join(tex))
-    print(f"report: {out / 'index.html'} ({len(sweeps)} cases)")
-    if a.bundle and sweeps:
-        write_bundle(a.bundle, sweeps, out, "\n".join(tex))
-        print(f"bundle: {a.bundle / 'verification.tex'}")
+    made = []
+    jobs = [(case, ss, a.results, out) for case, ss in sorted(sweeps.items())]
+    with ProcessPoolExecutor(max_workers=max(1, min(len(jobs), os.cpu_count() or 1))) as pool:  # figures dominate
+        for m in pool.map(write_case_page, jobs):
+            made += m
+    km_file = a.mutants or ROOT / "runs" / "mutants" / "kill_matrix.json"
+    mutants_link = None
+    if a.mutants or km_file.is_file():
+        (out / "mutants.html").write_text(mutants_page(read_json(km_file)))
+        mutants_link = "mutants.html"
+    (out / "index.html").write_text(index_page(a.name, sweeps, missing, tier, mutants_link))
+    c = counts(sweeps)
+    print(f"report: {out / 'index.html'} ({len(sweeps)} cases; {c['verified']} verified, "
+          f"{c['no order claimed']} no order claimed, {c['fail']} fail; {len(made)} figures)")
+    if a.bundle:
+        import report_tex
+        report_tex.write_bundle(a.bundle, sweeps, tier, made, out)
 
 
 if __name__ == "__main__":

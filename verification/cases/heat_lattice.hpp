@@ -1,5 +1,5 @@
 #pragma once
-// Shared by the conduction cases (laplacian, heat, heat_stability, heat_stiff): particle sets in
+// Shared by the conduction cases (laplacian, heat, heat_stability, heat_stiff) and interpolation: particle sets in
 // the periodic unit box, and the Fourier symbols of the SPH second-derivative operators on a
 // lattice, computed by direct sums over lattice offsets (no neighbour search, no pair loop, no
 // SPH operator code): the independent reference for eigenvalues and lattice errors.
@@ -67,19 +67,38 @@ double brookshaw_symbol(const sph::Vec<D>& k, double ratio, double dx) {
   return 2.0 * s * std::pow(dx, D) / lattice_kernel_sum<D>(ratio);
 }
 
-// Same for the two-pass form (56)-(59) (both variants agree on a uniform lattice): the square of
-// the gradient's symbol, lambda = |sum_r V sin(k.r) grad W(r)|^2. It vanishes at k = pi/dx:
-// the two-pass form does not damp the lattice's odd-even mode.
+// Symbol of the SPH interpolant (18) with V_j = dx^D / S0: the factor by which it multiplies the
+// modes exp(i k.x) with k = +-k_a per axis (equal by the lattice's mirror symmetry):
+// sum_r dx^D W(r) cos(k.r) / S0, self term included.
 template <int D>
-double two_pass_symbol(const sph::Vec<D>& k, double ratio, double dx) {
+double interpolant_symbol(const sph::Vec<D>& k, double ratio, double dx) {
+  double s = sph::CubicSpline<D>::W(0.0, ratio * dx);
+  for_each_offset<D>(ratio, [&](const sph::Vec<D>& o) {
+    s += sph::CubicSpline<D>::W(o.norm() * dx, ratio * dx) * std::cos(k.dot(o * dx));
+  });
+  return s * std::pow(dx, D) / lattice_kernel_sum<D>(ratio);
+}
+
+// Symbol of the SPH gradient (19) (and (32), equal on a lattice, where sum_j V_j grad W_ij = 0):
+// grad f_i = sum_j V_j f_j grad_i W_ij maps exp(i k.x) to i g(k) exp(i k.x) with
+// g(k) = -sum_r V sin(k.r) grad W(r), so the exact gradient is g(k) = k.
+template <int D>
+sph::Vec<D> gradient_symbol(const sph::Vec<D>& k, double ratio, double dx) {
   sph::Vec<D> g = sph::Vec<D>::Zero();
   const double h = ratio * dx;
   for_each_offset<D>(ratio, [&](const sph::Vec<D>& o) {
     const sph::Vec<D> r = o * dx;
-    g += std::sin(k.dot(r)) * sph::CubicSpline<D>::gradW(r, r.norm(), h);
+    g -= std::sin(k.dot(r)) * sph::CubicSpline<D>::gradW(r, r.norm(), h);
   });
-  g *= std::pow(dx, D) / lattice_kernel_sum<D>(ratio);
-  return g.squaredNorm();
+  return g * (std::pow(dx, D) / lattice_kernel_sum<D>(ratio));
+}
+
+// Same for the two-pass form (56)-(59) (both variants agree on a uniform lattice): the square of
+// the gradient's symbol, lambda = |g(k)|^2. It vanishes at k = pi/dx: the two-pass form does
+// not damp the lattice's odd-even mode.
+template <int D>
+double two_pass_symbol(const sph::Vec<D>& k, double ratio, double dx) {
+  return gradient_symbol<D>(k, ratio, dx).squaredNorm();
 }
 
 // Largest eigenvalue over the modes k = 2 pi m, 0 <= m_a <= n/2, of the periodic n^D lattice

@@ -23,6 +23,29 @@ double rms(const std::vector<double>& a, const std::vector<double>& b) {
   return std::sqrt(s / a.size()) / A;
 }
 
+// Forward Euler's error against the exact solution of the linear lattice system, mode by mode:
+// the lattice is translation invariant, so the DFT of u0 diagonalises the Brookshaw operator
+// with eigenvalues lambda_m = K / S0 * symbol(2 pi m) from direct lattice sums
+// (heat_lattice.hpp; no pair loop, no scene), and Euler multiplies mode m by (1 - lambda_m dt)
+// per step where the exact flow multiplies it by exp(-lambda_m dt). Returns the RMS over
+// particles of the difference at t_end, over the amplitude A (Parseval).
+double euler_error_prediction(const std::vector<double>& u0, double K, double hfact, double t_end, long steps) {
+  const std::size_t n = u0.size();
+  const double dx = 1.0 / n, dt = t_end / steps, S0 = heat::lattice_kernel_sum<1>(hfact);
+  double sum = 0.0;
+  for (std::size_t m = 0; m < n; ++m) {
+    double re = 0.0, im = 0.0;
+    for (std::size_t j = 0; j < n; ++j) {
+      const double phase = 2.0 * std::numbers::pi * double((m * j) % n) / n;
+      re += u0[j] * std::cos(phase), im -= u0[j] * std::sin(phase);
+    }
+    const double lam = K / S0 * heat::brookshaw_symbol<1>(sph::Vec<1>::Constant(2.0 * std::numbers::pi * m), hfact, dx);
+    const double g = std::pow(1.0 - lam * dt, double(steps)) - std::exp(-lam * t_end);
+    sum += (re * re + im * im) * g * g;
+  }
+  return std::sqrt(sum) / n / A;
+}
+
 Result run(const Params& prm) {
   constexpr int D = 1;
   const int n = static_cast<int>(prm.integer("n"));
@@ -73,7 +96,7 @@ Result run(const Params& prm) {
     fig.series.push_back(sr);
   }
   double best_cvode_wall = INFINITY;
-  long cvode_steps = 0, cvode_rhs = 0;
+  long cvode_steps = 0, cvode_rhs = 0, cheapest_rhs = 0;
   std::string best_solver;
   for (const char* solver : {"spgmr", "band", "dense"}) {
     if (std::string(solver) == "dense" && n > 2048) continue;  // O(n^3) factorisations
@@ -97,6 +120,8 @@ Result run(const Params& prm) {
       // The cheapest CVODE run at least as accurate as forward Euler at 0.95 of its limit.
       if (err <= euler_err && c.wall_s < best_cvode_wall)
         best_cvode_wall = c.wall_s, cvode_steps = c.stats.steps, cvode_rhs = c.stats.rhs_evals, best_solver = solver;
+      // The same by evaluations of f (each one pair loop over the set): a cost free of timing noise.
+      if (err <= euler_err && (cheapest_rhs == 0 || c.stats.rhs_evals < cheapest_rhs)) cheapest_rhs = c.stats.rhs_evals;
     }
     fig.series.push_back(sr);
   }
@@ -105,7 +130,8 @@ Result run(const Params& prm) {
   r.extra = {{"t_end", t_end}, {"dt_bound", dt_bound}, {"dt_bound_K_over_dx2", dt_bound * K * n * n},
              {"explicit_steps", euler_steps}, {"explicit_wall_s", euler_wall}, {"explicit_error", euler_err},
              {"cvode_steps", cvode_steps}, {"cvode_rhs_evals", cvode_rhs}, {"cvode_best_solver", best_solver},
-             {"cvode_wall_s", best_cvode_wall},
+             {"cvode_wall_s", best_cvode_wall}, {"cvode_cheapest_rhs_evals_equal_error", cheapest_rhs},
+             {"explicit_error_predicted", euler_error_prediction(u0, K, hfact, t_end, euler_steps)},
              {"speedup_equal_error", std::isfinite(best_cvode_wall) ? euler_wall / best_cvode_wall : 0.0},
              {"reference", {{"steps", ref.stats.steps}, {"rhs_evals", ref.stats.rhs_evals}, {"wall_s", ref.wall_s}}},
              {"runs", runs}};
@@ -118,8 +144,10 @@ void validate(const Params& p) {
 }
 
 std::vector<Check> gates(const Sweep& s) {
-  const auto& x = s.runs.back().extra;
+  const auto& fine = s.runs.back();
+  const auto& x = fine.extra;
   const double expl = x["explicit_steps"].get<double>(), impl = x["cvode_steps"].get<double>();
+  const double cheapest = x["cvode_cheapest_rhs_evals_equal_error"].get<double>();
   return {
       // The stiff regime the case is for: explicit needs thousands of steps (t_end lambda_max / 2).
       {"explicit_steps", expl, 1000.0, 1e9, "stiff case: t_end / (2 / lambda_max) >= 1000"},
@@ -127,7 +155,25 @@ std::vector<Check> gates(const Sweep& s) {
       {"cvode_steps_over_explicit", impl / expl, 1e-9, 0.1, "A-stable BDF (orders 1-2) is not step-limited by lambda_max"},
       // Reference fact (reference-values.md): at h = 2 dx the bound is 0.5 dx^2 / K.
       {"dt_bound_K_over_dx2", x["dt_bound_K_over_dx2"], 0.5 - 1e-9, 0.5 + 1e-9, "3-point FD Laplacian: dt <= 0.5 dx^2 / K"},
+      // The SPH side: forward Euler's error at 0.95 of its bound against its prediction from the
+      // lattice symbol mode by mode (euler_error_prediction). The reference (CVODE rtol 1e-12)
+      // errs by ~1e-10 against an error of 1e-5: agreement measured 6e-9, 1.5e-8, 6e-8 relative at
+      // n = 128, 256, 512; bound 1e-6.
+      {"time_euler_vs_fourier_prediction", std::abs(x["explicit_error"].get<double>() / x["explicit_error_predicted"].get<double>() - 1.0),
+       0.0, 1e-6, "Euler's amplification (1 - lambda dt)^steps per lattice mode", Check::Kind::verification,
+       "time_euler_at_bound"},
+      // Its time against CVODE's at equal error, counted in evaluations of f (pair loops): explicit
+      // steps grow as n^2 (dt ~ dx^2), CVODE's as accuracy demands. Measured 11.2 (n = 256) and
+      // 12.5 (n = 512) times more for Euler than for the cheapest CVODE run at least as accurate;
+      // bound 5 (margin > 2).
+      {"explicit_rhs_over_cvode_equal_error", cheapest > 0 ? expl / cheapest : 0.0, 5.0, 1e9,
+       "at equal error CVODE needs fewer evaluations of the SPH operator", Check::Kind::verification,
+       "time_euler_at_bound"},
   };
+  // Wall time at equal error (extra "speedup_equal_error") is reported, not gated: measured 1.3 to
+  // 1.7 at n = 256 and 1.8 to 4.2 at n = 512 in repeated runs on a machine loaded 12 on 2 cores;
+  // a gate on it would fail on the load, not on the code. The evaluation count above is the
+  // same comparison without the timing noise.
 }
 
 const Registration reg{Case{
@@ -137,9 +183,14 @@ const Registration reg{Case{
     .tags = {"gate"},
     .params = {integer_param("n", 256, "particles"),
                real_param("K", 10.0, "conductivity (rho c_v = 1 at h = 2 dx)", 0.0)},
-    .levels = {.quick = {256}, .standard = {256, 512}, .full = {256, 512}},
+    // CPU time (one thread, user): n = 128 ~0.3 s, 256 ~1.2 s, 512 ~5.5 s; explicit cost grows as
+    // n^3 and the dense references as n^3, so n = 1024 ~45 s and 2048 (spgmr reference) ~6 min
+    // (estimated from the n = 256 -> 512 factor of 4.6).
+    .levels = {.quick = {128, 256}, .standard = {128, 256, 512}, .full = {256, 512, 1024, 2048}},
     .orders = [](const Params&) {
-      return OrderClaims{{"time_euler_at_bound", {2.0, 0.5, "Euler O(dt) at dt = 0.95 * 2 / lambda_max ~ dx^2: O(n^-2)"}}};
+      // Band 0.05: the sine mode's error (1/sqrt 2) e^-1 lambda_1 dt / 2 ~ n^-2 dominates (the
+      // pulse's share changes slowly with n); measured 2.012 +- 0.001 over n = 128, 256, 512.
+      return OrderClaims{{"time_euler_at_bound", {2.0, 0.05, "Euler O(dt) at dt = 0.95 * 2 / lambda_max ~ dx^2: O(n^-2)"}}};
     },
     .error_defs = {{"time_euler_at_bound", "rms over particles of |u_Euler - u_ref| / amplitude at t_end, forward Euler at "
                                            "0.95 of its stability bound, u_ref from CVODE at rtol 1e-12"}},

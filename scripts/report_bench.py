@@ -1,0 +1,33 @@
+"""The benchmark page of report.py (a folder with bench.json from `sphv bench`, scripts/bench.sh)."""
+import html
+
+import report_figures as figs
+from report_data import fmt, read_json
+
+
+def bench_body(results, out):
+    b = read_json(results / "bench.json")
+    pr = b["provenance"]
+    e = html.escape
+    body = [f"<h1>sphv benchmarks</h1><p>{e(b['benchmark'])}; {e(str(pr.get('cpu')))}, {pr.get('cores')} cores, build "
+            f"{e(str(pr.get('build_type')))} ({e(str(pr.get('cxx_flags')))}), {e(str(pr.get('compiler')))}, commit "
+            f"{e(str(pr.get('git_commit')))}. Benchmarks, not tests: nothing fails on a time.</p><div class='figs'>"]
+    for f in b["figures"]:
+        stem = figs.run_figure(f, "", out / "fig" / "bench" / f["name"])
+        if stem:
+            png, pdf = (stem.with_suffix(x).relative_to(out).as_posix() for x in (".png", ".pdf"))
+            body.append(f"<figure><a href='{e(png)}'><img src='{e(png)}' alt='{e(f['title'])}'></a>"
+                        f"<figcaption>{e(f['title'])} (<a href='{e(pdf)}'>PDF</a>)</figcaption></figure>")
+    body.append("</div><table><tr><th>stage</th><th>N</th><th>threads</th><th>seconds</th><th>particle updates/s</th>"
+                "<th>pair interactions/s</th></tr>")
+    for r in b["rows"]:
+        body.append(f"<tr><td>{e(r['stage'])}</td><td class='num'>{r['n']}</td><td class='num'>{r['threads']}</td>"
+                    f"<td class='num'>{fmt(r['seconds'], '.4g')}</td><td class='num'>{fmt(r['particle_updates_per_s'], '.3e')}</td>"
+                    f"<td class='num'>{fmt(r['pairs_per_s'], '.3e')}</td></tr>")
+    body.append("</table><p>Fitted cost slopes (time ~ N^slope): " +
+                ", ".join(f"{e(k)} {fmt(v, '.2f')}" for k, v in b["fitted_slopes"].items()) +
+                ". Bytes per particle (hydro state + neighbour list, counted): " +
+                ", ".join(f"N={k}: {v:.0f}" for k, v in b["bytes_per_particle"].items()) +
+                "; peak resident memory per particle (measured, whole process): " +
+                ", ".join(f"N={k}: {v:.0f}" for k, v in b.get("peak_resident_bytes_per_particle", {}).items()) + ".</p>")
+    return "".join(body)

@@ -1,0 +1,166 @@
+"""Reading a results folder of sphv (`sphv verify --out DIR` or `sphv sweep`) for the report.
+
+A sweep is the parsed sweep.json (keys as verification/sweep.cpp writes them) plus "_dir", the
+folder that holds it, relative to the results root. The report only renders what the harness
+decided (rows and their outcomes, checks and their kinds); it never re-judges a number."""
+import json
+import math
+import re
+import sys
+from pathlib import Path
+
+OUTCOMES = ("verified", "no order claimed", "fail")
+
+
+def fail(msg, code=2):
+    print(f"report.py: error: {msg}", file=sys.stderr)
+    sys.exit(code)
+
+
+def read_json(path):
+    try:
+        return json.loads(Path(path).read_text())
+    except OSError as e:
+        fail(f"cannot read {path}: {e.strerror}", 3)
+    except json.JSONDecodeError as e:
+        fail(f"{path} is not JSON: {e}")
+
+
+def load(root):
+    """Returns (sweeps by case, summary.json entries that have no sweep.json, tier)."""
+    root = Path(root)
+    files = sorted(root.glob("**/sweep.json"))
+    if not files:
+        fail(f"no sweep.json under {root}")
+    sweeps = {}
+    for f in files:
+        s = read_json(f)
+        for key in ("case", "variant", "levels", "runs", "rows", "checks"):
+            if key not in s:
+                fail(f"{f} has no '{key}' (written by an sphv older than the outcome rows?)")
+        s["_dir"] = f.parent.relative_to(root)
+        sweeps.setdefault(s["case"], []).append(s)
+    for ss in sweeps.values():  # the default variant first
+        ss.sort(key=lambda s: (s["variant"] != "default", s["variant"]))
+    missing = []
+    if (root / "summary.json").exists():
+        have = {(s["case"], s["variant"]) for ss in sweeps.values() for s in ss}
+        missing = [e for e in read_json(root / "summary.json") if (e["case"], e["variant"]) not in have]
+    tiers = sorted({str(s.get("tier", "")) for ss in sweeps.values() for s in ss} - {""})
+    return sweeps, missing, ", ".join(tiers) or "not recorded"
+
+
+def num(v):
+    return isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v)
+
+
+def fmt(v, spec=".3g", none="–"):
+    return format(v, spec) if num(v) else none
+
+
+def f2(v):
+    """Two decimals, without a negative zero."""
+    return f"{v:.2f}".replace("-0.00", "0.00")
+
+
+def order_text(row):
+    """Observed order as 'p ± se' (the standard error of the least-squares fit)."""
+    if not num(row.get("observed")):
+        return "–"
+    se = row.get("se")
+    return f"{f2(row['observed'])} ± {f2(se)}" if num(se) else f"{f2(row['observed'])} (no s.e.: 2 levels)"
+
+
+def expected_text(row):
+    if not num(row.get("expected")):
+        return "none"
+    return f"{row['expected']:.3g} ± {row.get('band', 0):.3g}"
+
+
+def checks_on(s, error):
+    return [c for c in s["checks"] if c.get("error", "") == error]
+
+
+def row_reason(s, row):
+    """What the outcome rests on, in a few words."""
+    e = row["error"]
+    bad = [c["name"] for c in checks_on(s, e) if not c["pass"]]
+    if row["outcome"] == "fail":
+        if row.get("why"):  # the harness's own reason ("failed: ...", "no bound", ...)
+            return row["why"]
+        if bad:
+            return "failed: " + ", ".join(bad)
+        if e not in s.get("claims", {}):
+            return "the case states no claim for this error"
+        if num(row.get("expected")):
+            return "order claimed without a bound check on the error"
+        return row.get("why", "")
+    if row["outcome"] == "no order claimed":
+        return row.get("why", "")
+    bounds = [c["name"] for c in checks_on(s, e) if c.get("kind", "verification") == "verification"
+              and c["name"] != f"order_{e}" and c["pass"]]
+    return "order in band; bounds: " + ", ".join(bounds) if bounds else "order in band"
+
+
+def sweep_wide_failures(s):
+    return [c["name"] for c in checks_on(s, "") if not c["pass"]]
+
+
+def counts(sweeps):
+    out = {k: 0 for k in OUTCOMES}
+    for ss in sweeps.values():
+        for s in ss:
+            for r in s["rows"]:
+                out[r["outcome"]] = out.get(r["outcome"], 0) + 1
+    return out
+
+
+def errors_of(s):
+    """Every error name the runs of a sweep report, claimed ones (rows) first."""
+    names = [r["error"] for r in s["rows"]]
+    for run in s["runs"]:
+        names += [e for e in run.get("errors", {}) if e not in names]
+    return names
+
+
+def claim(s, error):
+    c = s.get("claims", {}).get(error, {})
+    return c if num(c.get("expected")) else None
+
+
+def series(s, error, x="n"):
+    """(x, error) of every run with a positive finite error: x is the level n or the wall time."""
+    pts = []
+    for n, run in zip(s["levels"], s["runs"]):
+        y = run.get("errors", {}).get(error)
+        xv = n if x == "n" else run.get("wall_time_s")
+        if num(y) and y > 0 and num(xv) and xv > 0:
+            pts.append((xv, y))
+    return pts
+
+
+def provenances(sweeps):
+    return [run.get("provenance", {}) for ss in sweeps.values() for s in ss for run in s["runs"]]
+
+
+def is_dirty(prov):
+    """A result produced by a tree with uncommitted changes (any of the spellings provenance uses)."""
+    tree = prov.get("source_tree")
+    return (bool(tree.get("dirty")) if isinstance(tree, dict) else False) or bool(prov.get("dirty") or prov.get("git_dirty")) \
+        or str(prov.get("git_commit", "")).endswith("-dirty")
+
+
+def slug(text):
+    return re.sub(r"[^A-Za-z0-9_.-]+", "_", str(text)).strip("_") or "x"
+
+
+def wrap(text, width):
+    """Breaks text into lines of at most about width characters (axis labels)."""
+    lines, line = [], ""
+    for word in str(text).split():
+        if line and len(line) + 1 + len(word) > width:
+            lines.append(line)
+            line = word
+        else:
+            line = f"{line} {word}".strip()
+    return "\n".join(lines + [line])

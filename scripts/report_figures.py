@@ -1,0 +1,149 @@
+"""The report's figures: every figure is written as PNG (for the page) and vector PDF (for a paper).
+Each function returns the file stem it wrote, or None when there is nothing to draw (no empty plots)."""
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import matplotlib.ticker  # noqa: E402
+import numpy as np  # noqa: E402
+
+from report_data import claim, num, series, wrap  # noqa: E402
+
+plt.rcParams.update({"pdf.fonttype": 42, "font.size": 8, "axes.titlesize": 9, "legend.fontsize": 7})
+
+
+def save(fig, stem):
+    stem.parent.mkdir(parents=True, exist_ok=True)
+    # Fixed margins with room for labels of up to three lines (wrap()): "tight" bounding boxes or
+    # constrained layout cost a further draw of every figure, nearly doubling the report's time.
+    fig.subplots_adjust(left=0.16, right=0.97, bottom=0.15, top=0.89)
+    for ext in ("png", "pdf"):
+        fig.savefig(stem.with_suffix(f".{ext}"), dpi=110)
+    plt.close(fig)
+    return stem
+
+
+def n_label(s):
+    return wrap(f"n: {s.get('n_counts') or 'resolution'}", 70)
+
+
+def error_label(s, error):
+    text = s.get("error_defs", {}).get(error)
+    return wrap(f"{error}: {text}" if text else error, 55)
+
+
+def convergence(case, s, row, stem):
+    """Error against n for one claimed error of one variant: the measured points, the harness's
+    least-squares fit (its order and standard error) and the expected order with its band,
+    drawn through the finest point."""
+    e = row["error"]
+    pts = series(s, e)
+    c = claim(s, e)
+    if len(pts) < 2 or c is None:
+        return None
+    n, y = (np.array(v, float) for v in zip(*pts))
+    fig, ax = plt.subplots(figsize=(5.6, 4))
+    ax.loglog(n, y, "o", color="C0", label=f"measured, n = {n[0]:g} to {n[-1]:g}")
+    if num(row.get("observed")):
+        p = row["observed"]
+        logc = np.mean(np.log(y) + p * np.log(n))  # intercept of the fit with slope -p
+        se = f" ± {row['se']:.2f}" if num(row.get("se")) else ""
+        ax.loglog(n, np.exp(logc - p * np.log(n)), "-", color="C0", lw=1, label=f"least-squares fit: order {p:.2f}{se}")
+    q, band = c["expected"], c.get("band", 0.0) or 0.0
+    guide = lambda order: y[-1] * (n / n[-1]) ** (-order)  # noqa: E731
+    ax.loglog(n, guide(q), "--", color="C3", lw=1, label=f"expected order {q:.3g} ± {band:.3g} (through the finest point)")
+    if band > 0:
+        ax.fill_between(n, guide(q - band), guide(q + band), color="C3", alpha=0.12, lw=0)
+    ax.set_xticks(n, [f"{v:g}" for v in n])  # the levels themselves, not powers of ten
+    ax.xaxis.set_minor_formatter(matplotlib.ticker.NullFormatter())
+    ax.set_xlabel(n_label(s))
+    ax.set_ylabel(error_label(s, e))
+    ax.set_title(f"{case} [{s['variant']}]: {e} against n ({row['outcome']})")
+    ax.legend()
+    ax.grid(True, which="both", alpha=0.3)
+    return save(fig, stem)
+
+
+def wall_time(case, ss, error, stem):
+    """Error against the wall time of each run, one line per variant that reports the error (none
+    when no variant has two points)."""
+    fig, ax = plt.subplots(figsize=(5.6, 4))
+    drawn = longest = 0
+    for k, s in enumerate(ss):
+        pts = [(run.get("wall_time_s"), run.get("errors", {}).get(error), n) for n, run in zip(s["levels"], s["runs"])]
+        pts = [p for p in pts if num(p[0]) and p[0] > 0 and num(p[1]) and p[1] > 0]
+        if not pts:
+            continue
+        longest = max(longest, len(pts))
+        t, y, n = zip(*pts)
+        outcome = next((r["outcome"] for r in s["rows"] if r["error"] == error), "no claim")
+        ax.loglog(t, y, "o-", color=f"C{k % 10}", ms=4, lw=0.8, label=f"{s['variant']} ({outcome})")
+        if len(ss) <= 3:  # which level each point is: timings of small runs are noisy
+            for tx, ty, nx in pts:
+                ax.annotate(f"n={nx:g}", (tx, ty), textcoords="offset points", xytext=(4, 3), fontsize=6, color=f"C{k % 10}")
+        drawn += 1
+    if not drawn or longest < 2:  # one point per line says nothing about cost against accuracy
+        plt.close(fig)
+        return None
+    ax.set_xlabel("wall time of the run [s]")
+    ax.set_ylabel(error_label(ss[0], error))
+    ax.set_title(f"{case}: {error} against run time, one line per variant")
+    ax.legend()
+    ax.grid(True, which="both", alpha=0.3)
+    return save(fig, stem)
+
+
+def run_figure(f, suffix, stem):
+    """A figure a run describes in its result.json (profiles, time series); points that a log
+    axis cannot show are left out, and a figure with no point left is not drawn."""
+    fig, ax = plt.subplots(figsize=(5.6, 4))
+    drawn = 0
+    for k, srs in enumerate(f["series"]):
+        x = np.array([v if num(v) else np.nan for v in srs["x"]], float)
+        y = np.array([v if num(v) else np.nan for v in srs["y"]], float)
+        ok = np.isfinite(x) & np.isfinite(y)
+        if f["xscale"] == "log":
+            ok &= x > 0
+        if f["yscale"] == "log":
+            ok &= y > 0
+        if not ok.any():
+            continue
+        marker = "o" if ok.sum() <= 12 else None  # short series (sweeps, benchmarks) show their points
+        style = {"points": dict(ls="none", marker=".", ms=3), "dashed": dict(ls="--", marker=marker, ms=3),
+                 "line": dict(ls="-", marker=marker, ms=3)}
+        ax.plot(x[ok], y[ok], label=srs["label"] or None, color=f"C{k % 10}", **style.get(srs["style"], {}))
+        drawn += 1
+    if not drawn:
+        plt.close(fig)
+        return None
+    ax.set_xscale(f["xscale"])
+    ax.set_yscale(f["yscale"])
+    ax.set_xlabel(wrap(f["xlabel"], 70))
+    ax.set_ylabel(wrap(f["ylabel"], 55))
+    ax.set_title(wrap(f"{f['title']}{suffix}", 62))
+    if any(line.get_label() and not line.get_label().startswith("_") for line in ax.get_lines()):
+        ax.legend()
+    ax.grid(True, alpha=0.3)
+    return save(fig, stem)
+
+
+def order_overview(rows, stem):
+    """Observed order (± 2 standard errors) against expected order for every claimed error: the
+    whole catalogue's convergence claims in one figure (for the publication bundle)."""
+    rows = [r for r in rows if num(r["row"].get("expected")) and num(r["row"].get("observed"))]
+    if not rows:
+        return None
+    fig, ax = plt.subplots(figsize=(5.6, max(2.5, 0.16 * len(rows) + 1)))
+    colour = {"verified": "C2", "fail": "C3"}
+    for k, r in enumerate(rows):
+        row = r["row"]
+        err = 2 * row["se"] if num(row.get("se")) else 0
+        ax.errorbar(row["observed"], k, xerr=err, fmt="o", ms=3, color=colour.get(row["outcome"], "C0"))
+        band = row.get("band") or 0
+        ax.plot([row["expected"] - band, row["expected"] + band], [k, k], "-", color="0.6", lw=4, alpha=0.5)
+    ax.set_yticks(range(len(rows)))
+    ax.set_yticklabels([r["label"] for r in rows], fontsize=6)
+    ax.invert_yaxis()
+    ax.set_xlabel("order of convergence: observed ± 2 s.e. (dots), expected band (grey)")
+    ax.grid(True, axis="x", alpha=0.3)
+    return save(fig, stem)

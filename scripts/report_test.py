@@ -1,0 +1,101 @@
+#!/usr/bin/env python3
+"""Test of the report (ctest report_*): runs report.py on a results folder and checks what a
+reader relies on: no warning on stderr, every href and src resolves inside the folder, the
+counts at the top match the rows of the sweep.json files, a convergence figure (PNG and PDF)
+for every claimed error of every variant and none for errors without an order claim, a
+run-time figure per claimed error, and with --mutants the kill matrix page. With --dirty it
+also checks that a bundle of results whose provenance records a dirty tree is refused
+(--allow-dirty is exercised by bundle_test.sh).
+
+usage: report_test.py RESULTS_DIR WORK_DIR [--mutants FILE] [--dirty]"""
+import json
+import re
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE))
+from report_check_links import broken_links  # noqa: E402
+from report_data import num, series, slug  # noqa: E402
+
+failures = []
+
+
+def expect(cond, what):
+    if not cond:
+        failures.append(what)
+
+
+def report(results, reports, *extra):
+    return subprocess.run([sys.executable, str(HERE / "report.py"), str(results), "--name", "t", "--reports", str(reports), *extra],
+                          capture_output=True, text=True)
+
+
+def main():
+    args = sys.argv[1:]
+    if len(args) < 2:
+        sys.exit(__doc__)
+    results, work = Path(args[0]), Path(args[1])
+    mutants = args[args.index("--mutants") + 1] if "--mutants" in args else None
+    shutil.rmtree(work, ignore_errors=True)
+    res = report(results, work, *(["--mutants", mutants] if mutants else []))
+    expect(res.returncode == 0, f"report.py exit {res.returncode}")
+    expect(res.stderr == "", f"report.py wrote to stderr (warnings?):\n{res.stderr}")
+    out = work / "t"
+
+    bad, n_links, n_pages = broken_links(out)
+    expect(not bad, "broken links:\n  " + "\n  ".join(bad))
+    expect(n_links > 0, "no links at all")
+
+    sweeps = [json.loads(f.read_text()) for f in sorted(results.glob("**/sweep.json"))]
+    outcomes = [r["outcome"] for s in sweeps for r in s["rows"]]
+    index = (out / "index.html").read_text()
+    for name in ("verified", "no order claimed", "fail"):
+        expect(f"{outcomes.count(name)} {name}</span>" in index, f"index does not count {outcomes.count(name)} {name}")
+    for s in sweeps:
+        page = out / f"case-{slug(s['case'])}.html"
+        expect(page.is_file() and f"case-{slug(s['case'])}.html" in index, f"no linked page for {s['case']}")
+        text = page.read_text() if page.is_file() else ""
+        expect("<p class='claim'>" in text, f"{page.name} does not open with the claim")
+        for c in s["checks"]:
+            expect(re.search(rf"<td>{re.escape(c['name'])}</td><td>[^<]*</td><td[^>]*>{c.get('kind', 'verification')}</td>", text),
+                   f"{page.name}: check {c['name']} not listed with its kind")
+        fig = out / "fig" / slug(s["case"])
+        for r in s["rows"]:
+            stem = fig / f"{slug(s['variant'])}_{slug(r['error'])}_convergence"
+            want = num(r.get("expected")) and len(series(s, r["error"])) >= 2
+            for ext in ("png", "pdf"):
+                expect(stem.with_suffix(f".{ext}").is_file() == want,
+                       f"{s['case']} {s['variant']} {r['error']}: convergence {ext} {'missing' if want else 'drawn without an order claim'}")
+            if want:
+                expect((fig / f"wall_{slug(r['error'])}.pdf").is_file(), f"{s['case']} {r['error']}: no run-time figure")
+    for png in out.glob("fig/**/*.png"):
+        expect(png.with_suffix(".pdf").is_file(), f"{png.name} has no PDF")
+    if mutants:
+        km = json.loads(Path(mutants).read_text())
+        killed = sum(bool(m["killed"]) for m in km["mutants"])
+        expect("href='mutants.html'" in index, "index does not link the mutants page")
+        text = (out / "mutants.html").read_text() if (out / "mutants.html").is_file() else ""
+        expect(f"<b>{killed} of {len(km['mutants'])}</b> killed" in text, "mutants page does not count the kills")
+
+    if "--dirty" in args:  # results recorded as produced from a dirty tree are not bundled
+        dirty = work / "dirty"
+        shutil.copytree(results, dirty)
+        f = next(dirty.glob("**/sweep.json"))
+        s = json.loads(f.read_text())
+        s["runs"][0]["provenance"]["source_tree"] = {"dirty": True, "changes": [" M sph/kernel.hpp"]}
+        f.write_text(json.dumps(s))
+        res = report(dirty, work, "--bundle", str(work / "bundle"))
+        expect(res.returncode == 2 and "uncommitted changes" in res.stderr, f"dirty results bundled: exit {res.returncode} {res.stderr}")
+
+    for f in failures:
+        print(f"FAIL: {f}")
+    if failures:
+        sys.exit(1)
+    print(f"PASS: report of {len(sweeps)} sweeps, {len(outcomes)} rows, {n_links} links in {n_pages} pages")
+
+
+if __name__ == "__main__":
+    main()

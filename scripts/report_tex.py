@@ -1,0 +1,271 @@
+"""The publication bundle: verification.tex (a section of a few pages: one summary table and a few
+chosen figures whose captions say what is compared with what, at which resolution) and
+verification-supplement.tex (every variant, check and figure), the figures as PDF,
+provenance.json and reproduce.sh. Both .tex files are meant for \\input in a paper (graphicx);
+example.tex and example-supplement.tex wrap them into documents for a quick look."""
+import json
+import os
+import re
+import shutil
+import unicodedata
+from pathlib import Path
+
+from report_data import f2, fmt, is_dirty, num, provenances, row_reason, slug, sweep_wide_failures
+
+FAIL = r"\textbf{FAIL}"
+TABLE_ROWS = 38  # rows per tabular: a float taller than a page cannot be placed (footnotesize, a4/letter)
+FLOATS_PER_FLUSH = 8  # \clearpage after this many figure floats: LaTeX holds at most 18 unplaced floats
+MATH = {"±": r"\pm", "×": r"\times", "≤": r"\le", "≥": r"\ge", "−": "-", "≈": r"\approx", "∞": r"\infty",
+        "²": "^2", "³": "^3", "·": r"\cdot", "∫": r"\int", "∑": r"\sum", "√": r"\surd", "∇": r"\nabla", "∂": r"\partial"}
+
+
+def tex(text):
+    """Plain text to LaTeX: specials escaped, Greek letters and common symbols as math, anything
+    else outside ASCII spelled as its Unicode name (pdflatex would stop on it)."""
+    out = []
+    for ch in str(text):
+        if ch in "\\{}_%&#$^~<>|":
+            out.append({"\\": r"\textbackslash{}", "^": r"\^{}", "~": r"\~{}", "<": r"$<$", ">": r"$>$",
+                        "|": r"$|$"}.get(ch, "\\" + ch))
+        elif ord(ch) < 128:
+            out.append(ch)
+        elif ch in MATH:
+            out.append(f"${MATH[ch]}$")
+        elif ch in "–—":
+            out.append("--" if ch == "–" else "---")
+        else:
+            name = unicodedata.name(ch, "")
+            m = re.match(r"GREEK (SMALL|CAPITAL) LETTER (\w+)$", name)
+            if m:
+                letter = m.group(2).lower()
+                out.append(f"$\\{letter.capitalize() if m.group(1) == 'CAPITAL' else letter}$")
+            else:
+                out.append(f"[{name.lower() or '?'}]")
+    return "".join(out)
+
+
+def order_tex(row):
+    """Observed order +- standard error; in parentheses where no order is claimed (information only)."""
+    if not num(row.get("observed")):
+        return "--"
+    p = f"${f2(row['observed'])} \\pm {f2(row['se'])}$" if num(row.get("se")) else f"${f2(row['observed'])}$ (2 levels)"
+    return p if num(row.get("expected")) else f"({p})"
+
+
+def expected_tex(row):
+    return f"${row['expected']:.3g} \\pm {row.get('band', 0):.3g}$" if num(row.get("expected")) else "none"
+
+
+def outcome_tex(row):
+    return {"verified": "verified", "no order claimed": "no claim", "fail": r"\textbf{fail}"}.get(row["outcome"], tex(row["outcome"]))
+
+
+def sci(v):
+    """A number for a table: 1.23e-04 as $1.23\\times10^{-4}$."""
+    if not num(v):
+        return "--"
+    if v == 0:
+        return "0"
+    m, x = f"{v:.2e}".split("e")
+    return f"${m}\\times10^{{{int(x)}}}$" if int(x) not in (-1, 0, 1) else f"{v:.3g}"
+
+
+def tables(head, spec, lines, caption, label):
+    """Long tables as consecutive floats of TABLE_ROWS rows (plain LaTeX: no longtable needed)."""
+    out = []
+    chunks = [lines[k:k + TABLE_ROWS] for k in range(0, len(lines), TABLE_ROWS)] or [[]]
+    for k, chunk in enumerate(chunks):
+        cont = f" (continued, part {k + 1} of {len(chunks)})" if k else ""
+        out += [r"\begin{table}[htbp]\centering\footnotesize\setlength{\tabcolsep}{3pt}", f"\\caption{{{caption}{cont}}}" + (f"\\label{{{label}}}" if not k else ""),
+                f"\\begin{{tabular}}{{{spec}}}\\hline", head + r" \\ \hline", *chunk, r"\hline\end{tabular}", r"\end{table}"]
+    return out
+
+
+def copy_figure(case, stem, figs):
+    """Copies a figure's PDF into the bundle (named after its case: stems repeat across cases)."""
+    name = f"{slug(case)}_{stem.stem}.pdf"
+    shutil.copy(stem.with_suffix(".pdf"), figs / name)
+    return name
+
+
+def figure(files, caption, width):
+    body = r"\hfill".join(f"\\includegraphics[width={width}\\linewidth]{{figures/{f}}}" for f in files)
+    return [r"\begin{figure}[htbp]\centering", body, f"\\caption{{{caption}}}", r"\end{figure}"]
+
+
+def convergence_caption(case, s, row):
+    defs = s.get("error_defs", {})
+    lv = s["levels"]
+    return (f"{tex(case)} ({tex(s['variant'])}): {tex(row['error'])}"
+            + (f", {tex(defs[row['error']])}" if row["error"] in defs else "")
+            + f", against $n$ ({tex(s.get('n_counts', ''))}) at $n = {lv[0]}$ to ${lv[-1]}$ ({len(lv)} levels): "
+            f"{tex(s.get('summary', ''))}. Observed order {order_tex(row)} (least-squares fit, solid), expected "
+            f"{expected_tex(row)} (dashed, through the finest point; band shaded); {outcome_tex(row)}.")
+
+
+def chosen(made):
+    """The convergence figures for the section: verified errors of distinct cases with the widest
+    range of n (then the most levels), at most three."""
+    cands = []
+    for case, s, err, kind, stem in made:
+        if kind != "convergence":
+            continue
+        row = next(r for r in s["rows"] if r["error"] == err)
+        if row["outcome"] == "verified" and len(s["levels"]) >= 3:
+            cands.append((-(s["levels"][-1] / s["levels"][0]), -len(s["levels"]), case, s, row, stem))
+    picked, cases = [], set()
+    for *_, case, s, row, stem in sorted(cands, key=lambda c: c[:3]):
+        if case not in cases:
+            picked.append((case, s, row, stem))
+            cases.add(case)
+    return picked[:3]
+
+
+def provenance_text(sweeps, tier):
+    provs = provenances(sweeps)
+    p = provs[0] if provs else {}
+    commits = sorted({str(q.get("git_commit")) for q in provs})
+    return (f"Every number in this section was produced by sphv at commit \\texttt{{{tex(', '.join(c[:12] for c in commits))}}}"
+            + (" (mixed commits)" if len(commits) > 1 else "")
+            + (r" \textbf{from a tree with uncommitted changes}" if any(is_dirty(q) for q in provs) else "")
+            + f", {tex(p.get('compiler', ''))} ({tex(p.get('build_type', ''))}, flags {tex(str(p.get('cxx_flags', '')).strip())}), "
+            f"on {tex(p.get('cpu', ''))} with {p.get('threads', '?')} OpenMP threads, tier {tex(tier)}; "
+            r"\texttt{reproduce.sh} re-runs it. ")
+
+
+def main_section(sweeps, tier, made, figs):
+    rows, n_rows = [], {"verified": 0, "no order claimed": 0, "fail": 0}
+    for case, ss in sorted(sweeps.items()):
+        for s in ss:
+            for r in s["rows"]:
+                n_rows[r["outcome"]] = n_rows.get(r["outcome"], 0) + 1
+        s = ss[0]
+        shown = [r for r in s["rows"] if num(r.get("expected")) or r["outcome"] == "fail"]
+        for k, r in enumerate(shown):
+            rows.append(f"{tex(case) if k == 0 else ''} & {tex(s.get('summary', '')) if k == 0 else ''} & "
+                        f"{tex(r['error'])} & {sci(r.get('fine_value'))} ($n={s['levels'][-1]}$) & {order_tex(r)} & "
+                        f"{expected_tex(r)} & {outcome_tex(r)} \\\\")
+        notes = []
+        unclaimed = [r["error"] for r in s["rows"] if r not in shown]
+        if unclaimed:
+            notes.append(f"{len(unclaimed)} error{'s' if len(unclaimed) > 1 else ''} with no order claimed, bounds hold "
+                         f"({tex(', '.join(unclaimed[:3]))}{', ...' if len(unclaimed) > 3 else ''})")
+        if len(ss) > 1:
+            more = [r["outcome"] for v in ss[1:] for r in v["rows"]]
+            notes.append(f"{len(ss) - 1} further variant{'s' if len(ss) > 2 else ''}: {more.count('verified')} verified, "
+                         f"{more.count('no order claimed')} no claim, {more.count('fail')} fail")
+        if notes:
+            note = f"\\emph{{{'; '.join(notes)} (supplement)}}"
+            rows.append(f" & \\multicolumn{{6}}{{p{{10.5cm}}}}{{{note}}} \\\\" if shown else
+                        f"{tex(case)} & {tex(s.get('summary', ''))} & \\multicolumn{{5}}{{p{{7.3cm}}}}{{{note}}} \\\\")
+        if s["rows"] or len(ss) > 1:
+            rows[-1] += r" \hline" if case != sorted(sweeps)[-1] else ""
+    t = [r"% Generated by scripts/report.py --bundle (scripts/bundle.sh): \input{verification} in a paper (needs graphicx).",
+         r"\section{Verification}\label{sec:verification}",
+         provenance_text(sweeps, tier) +
+         r"Each case compares the SPH result with a reference independent of the code (quadrature, analytic solution, exact "
+         r"Riemann solver, SUNDIALS, direct summation). Each error is measured at several resolutions $n$; its observed order "
+         r"$p$ is minus the least-squares slope of $\log$ error against $\log n$, with the standard error of that fit. "
+         r"An error is \emph{verified} when $p$ lies within the expected order $\pm$ (band $+\,2$ standard errors) "
+         r"and the error is under its bound; \emph{no claim} means the case states why no order is expected (a round-off "
+         r"quantity, a floor at fixed $h/\Delta x$, a pre-asymptotic range) and its bounds hold; \emph{fail} means a check on "
+         f"that error failed. Over all {sum(len(ss) for ss in sweeps.values())} case variants: {n_rows['verified']} errors "
+         f"verified, {n_rows['no order claimed']} with no order claimed, {n_rows['fail']} failing. Table~\\ref{{tab:verification}} "
+         r"lists the default variant of each case; the supplement (\texttt{verification-supplement.tex}) holds every variant, "
+         r"every check (against the reference or, labelled \emph{drift}, against the code's own earlier output) and every figure.", ""]
+    t += tables(r"case & compared & error & at finest $n$ & observed & expected & outcome",
+                r"l p{3.2cm} l l l l l", rows, "Verification summary: the default variant of every case.", "tab:verification")
+    picked = chosen(made)
+    names = [copy_figure(case, stem, figs) for case, s, row, stem in picked]
+    if picked:
+        caps = " ".join(f"({'abc'[k]}) {convergence_caption(case, s, row)}" for k, (case, s, row, _) in enumerate(picked))
+        t += figure(names, "Convergence, left to right: " + caps, round(0.98 / len(names), 2))
+    return "\n".join(t) + "\n"
+
+
+def supplement(sweeps, made, figs):
+    t = [r"% Generated by scripts/report.py --bundle: \input{verification-supplement} (needs graphicx).",
+         r"\section{Verification supplement}\label{sec:verification-supplement}",
+         r"Every case variant of Section~\ref{sec:verification}: each error's outcome, every check (\emph{verification}: "
+         r"against an independent reference; \emph{drift}: against the code's own earlier output, which shows only that "
+         r"nothing changed) and every figure. Figures show the finest run unless they plot against $n$ or wall time.", ""]
+    for case, ss in sorted(sweeps.items()):
+        s0 = ss[0]
+        t += [f"\\subsection{{{tex(case)}}}", f"{tex(s0.get('summary', ''))}. $n$: {tex(s0.get('n_counts', ''))}."]
+        defs = {k: v for s in ss for k, v in s.get("error_defs", {}).items()}
+        if defs:
+            t += [r"\begin{itemize}\small"] + [f"\\item {tex(k)}: {tex(v)}" for k, v in defs.items()] + [r"\end{itemize}"]
+        rows = []
+        for s in ss:
+            for k, r in enumerate(s["rows"]):
+                rows.append(f"{tex(s['variant']) if k == 0 else ''} & {tex(r['error'])} & {sci(r.get('fine_value'))} ($n={s['levels'][-1]}$) & "
+                            f"{order_tex(r)} & {expected_tex(r)} & {outcome_tex(r)} & {tex(row_reason(s, r))} \\\\")
+        if rows:
+            t += tables("variant & error & at finest $n$ & observed & expected & outcome & why", r"l l l l l l p{4.6cm}", rows,
+                        f"{tex(case)}: every variant.", f"tab:supp-{slug(case)}")
+        checks = []
+        for s in ss:
+            for c in s["checks"]:
+                if c.get("kind") != "drift":
+                    checks.append(f"{tex(s['variant'])} & {tex(c['name'])} & {fmt(c.get('value'), '.4g', '--')} & "
+                                  f"[{fmt(c.get('lo'), '.4g', '--')}, {fmt(c.get('hi'), '.4g', '--')}] & "
+                                  f"{'pass' if c['pass'] else FAIL} \\\\")
+        if checks:
+            t += tables("variant & verification check & value & allowed & ", "l l l l l", checks, f"{tex(case)}: verification checks.",
+                        f"tab:supp-checks-{slug(case)}")
+        drift = [(s, c) for s in ss for c in s["checks"] if c.get("kind") == "drift"]
+        bad = [f"{s['variant']}: {c['name']}" for s, c in drift if not c["pass"]]
+        wide = [f"{s['variant']}: {n}" for s in ss for n in sweep_wide_failures(s)]
+        t.append(f"{len(drift)} drift checks (own earlier output, not verification), {len(bad)} failing"
+                 + (f": {tex('; '.join(bad))}" if bad else "") + "." + (f" Sweep-wide failures: {tex('; '.join(wide))}." if wide else ""))
+        gci = [(s["variant"], k, g) for s in ss for k, g in s.get("gci", {}).items()]
+        if gci:
+            t.append("Roache's GCI (finest pair, relative): " + "; ".join(
+                f"{tex(v)} {tex(k)} $= {fmt(g.get('fine_value'), '.6g', '--')}$ $\\pm$ {fmt(g.get('gci'), '.2e', '--')}" for v, k, g in gci) + ".")
+        t.append("")
+        mine = [m for m in made if m[0] == case]
+        pairs = [mine[k:k + 2] for k in range(0, len(mine), 2)]
+        for k, pair in enumerate(pairs):
+            names, caps = [], []
+            for j, (_, s, name, kind, stem) in enumerate(pair):
+                names.append(copy_figure(case, stem, figs))
+                side = ("left", "right")[j] if len(pair) == 2 else ""
+                if kind == "convergence":
+                    row = next(r for r in s["rows"] if r["error"] == name)
+                    cap = convergence_caption(case, s, row)
+                elif kind == "wall":
+                    cap = f"{tex(case)}: {tex(name)} against the wall time of each run, one line per variant."
+                else:
+                    cap = f"{tex(case)} ({tex(s['variant'])}), finest run $n = {s['levels'][-1]}$: {tex(name.replace('_', ' '))}."
+                caps.append((f"{side.capitalize()}: " if side else "") + cap)
+            t += figure(names, " ".join(caps), 0.49 if len(pair) == 2 else 0.6)
+            if (k + 1) % FLOATS_PER_FLUSH == 0:
+                t.append(r"\clearpage")
+        t.append(r"\clearpage")
+    return "\n".join(t) + "\n"
+
+
+def write_bundle(bundle, sweeps, tier, made, report_dir):
+    bundle = Path(bundle)
+    figs = bundle / "figures"
+    shutil.rmtree(figs, ignore_errors=True)
+    figs.mkdir(parents=True)
+    (bundle / "verification.tex").write_text(main_section(sweeps, tier, made, figs))
+    (bundle / "verification-supplement.tex").write_text(supplement(sweeps, made, figs))
+    for name, part in (("example.tex", "verification"), ("example-supplement.tex", "verification-supplement")):
+        (bundle / name).write_text("\\documentclass{article}\n\\usepackage{graphicx}\n\\usepackage[margin=2.5cm]{geometry}\n"
+                                   f"\\begin{{document}}\n\\input{{{part}}}\n\\end{{document}}\n")
+    provs = provenances(sweeps)
+    prov = dict(provs[0]) if provs else {}
+    prov["git_commits"] = sorted({str(p.get("git_commit")) for p in provs})
+    prov["dirty_runs"] = sum(is_dirty(p) for p in provs)
+    prov["tier"] = tier
+    prov["uname"] = " ".join(os.uname())
+    (bundle / "provenance.json").write_text(json.dumps(prov, indent=1) + "\n")
+    commit = prov.get("git_commit")
+    (bundle / "reproduce.sh").write_text(
+        "#!/usr/bin/env bash\n# Re-runs every number behind this bundle and rewrites it, from the repository root at "
+        f"commit {commit}.\nset -e\n[ \"$(git rev-parse HEAD)\" = \"{commit}\" ] || "
+        f"{{ echo \"reproduce.sh: check out commit {commit} first\" >&2; exit 2; }}\n"
+        f"bash scripts/bundle.sh --tier {tier.split(',')[0]} --out bundle\n")
+    print(f"bundle: {bundle / 'verification.tex'} and verification-supplement.tex, {len(list(figs.glob('*.pdf')))} figures")
