@@ -3,7 +3,7 @@
 # sudo when that works without a password, otherwise prints the exact apt-get line and fails.
 set -euo pipefail
 packages=(g++ cmake make git libeigen3-dev libgsl-dev libsundials-dev catch2 nlohmann-json3-dev
-          libcli11-dev libssl-dev libopenmpi-dev openmpi-bin python3-matplotlib python3-numpy)
+          libcli11-dev libhdf5-dev libssl-dev libopenmpi-dev openmpi-bin python3-matplotlib python3-numpy)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -27,9 +27,9 @@ from report_data import (counts, errors_of, expected_text, fmt, is_dirty, load, 
 ROOT = Path(__file__).resolve().parent.parent
 CSS = """body{font-family:sans-serif;max-width:1250px;margin:auto;padding:0 12px;line-height:1.35}
 table{border-collapse:collapse;margin:8px 0}td,th{border:1px solid #ccc;padding:2px 6px;font-size:13px;vertical-align:top}
-th{background:#f2f2f2;text-align:left}td.num{text-align:right;white-space:nowrap}tr.first td{border-top:2px solid #888}
+th{background:#f2f2f2;text-align:left}td.num{text-align:right;white-space:nowrap}td.nw{white-space:nowrap}td.var{overflow-wrap:anywhere;max-width:160px}tr.first td{border-top:2px solid #888}
 .verified{color:#060}.noclaim{color:#845b00}.fail{color:#b00;font-weight:bold}.drift{color:#666}
-.counts span{display:inline-block;margin-right:18px;font-size:18px}.why{font-size:12px;color:#333;min-width:260px;max-width:480px}
+.counts span{display:inline-block;margin-right:18px;font-size:18px}.why{font-size:12px;color:#333;min-width:200px;max-width:400px}
 div.figs{display:flex;flex-wrap:wrap;gap:8px}figure{margin:0;width:600px}figcaption{font-size:12px}
 img{max-width:100%;border:1px solid #ddd}.prov{font-size:12px;color:#333}p.claim{font-size:15px;background:#f6f8fa;padding:8px}"""
 CLS = {"verified": "verified", "no order claimed": "noclaim", "fail": "fail"}
@@ -115,7 +115,7 @@ def summary_table(sweeps, missing):
             rows = s["rows"] or [None]
             wide = sweep_wide_failures(s)
             for k, row in enumerate(rows):
-                head = (f"<td><a href='{e(href)}'>{e(case)}</a></td><td>{e(s['variant'])}</td>" if k == 0 else "<td></td><td></td>")
+                head = (f"<td class='nw'><a href='{e(href)}'>{e(case)}</a></td><td class='var'>{e(s['variant'])}</td>" if k == 0 else "<td></td><td></td>")
                 tail = f"<td class='num'>{fmt(s.get('wall_time_s'), '.2f')}</td>" if k == 0 else "<td></td>"
                 first = " class='first'" if k == 0 else ""
                 if row is None:
@@ -126,7 +126,7 @@ def summary_table(sweeps, missing):
                 reason = row_reason(s, row)
                 if k == 0 and wide:
                     reason += "; sweep-wide failed: " + ", ".join(wide)
-                t.append(f"<tr{first}>{head}<td>{e(row['error'])}</td><td class='num'>{s['levels'][-1] if s['levels'] else '–'}</td>"
+                t.append(f"<tr{first}>{head}<td class='nw'>{e(row['error'])}</td><td class='num'>{s['levels'][-1] if s['levels'] else '–'}</td>"
                          f"<td class='num'>{fmt(row.get('fine_value'))}</td>{order_cell(row)}"
                          f"<td class='num'>{e(expected_text(row))}</td>{outcome_cell(row['outcome'])}"
                          f"<td class='why'>{e(reason)}</td>{tail}</tr>")
@@ -225,7 +225,10 @@ def case_page(case, ss, results, out, made):
     for s in ss:
         ver = [c for c in s["checks"] if c.get("kind", "verification") != "drift"]
         drift = [c for c in s["checks"] if c.get("kind") == "drift"]
-        body.append(f"<h3 id='{variant_anchor(s)}'>{e(s['variant'])}: {'passed' if s['passed'] else '<span class=fail>FAILED</span>'}</h3>")
+        bad_rows = [r["error"] for r in s["rows"] if r["outcome"] == "fail"]
+        status = "passed" if s["passed"] else "<span class=fail>FAILED</span>" + (
+            f" (failing errors: {e(', '.join(bad_rows))}; see the outcome table)" if bad_rows else "")
+        body.append(f"<h3 id='{variant_anchor(s)}'>{e(s['variant'])}: {status}</h3>")
         body.append(f"<table>{head}{check_rows(s, ver)}</table>" if ver else "<p>No verification check.</p>")
         if drift:
             bad = sum(not c["pass"] for c in drift)

@@ -13,7 +13,7 @@ from pathlib import Path
 from report_data import f2, fmt, is_dirty, num, provenances, row_reason, slug, sweep_wide_failures
 
 FAIL = r"\textbf{FAIL}"
-TABLE_ROWS = 38  # rows per tabular: a float taller than a page cannot be placed (footnotesize, a4/letter)
+TABLE_ROWS = 48  # rows per tabular: a float taller than a page cannot be placed (footnotesize, a4/letter)
 FLOATS_PER_FLUSH = 8  # \clearpage after this many figure floats: LaTeX holds at most 18 unplaced floats
 MATH = {"±": r"\pm", "×": r"\times", "≤": r"\le", "≥": r"\ge", "−": "-", "≈": r"\approx", "∞": r"\infty",
         "²": "^2", "³": "^3", "·": r"\cdot", "∫": r"\int", "∑": r"\sum", "√": r"\surd", "∇": r"\nabla", "∂": r"\partial"}
@@ -44,6 +44,17 @@ def tex(text):
     return "".join(out)
 
 
+def ragged(text):
+    """A p{} table cell set ragged right (justified narrow cells stretch their spaces); its row must
+    end in \\tabularnewline, since \\raggedright redefines \\\\."""
+    return r"\raggedright " + text
+
+
+def wide_row(text):
+    """A row across the five columns of the section's table."""
+    return r"\multicolumn{5}{p{0.9\linewidth}}{" + ragged(text) + r"} \tabularnewline"
+
+
 def order_tex(row):
     """Observed order +- standard error; in parentheses where no order is claimed (information only)."""
     if not num(row.get("observed")):
@@ -72,8 +83,12 @@ def sci(v):
 
 def tables(head, spec, lines, caption, label):
     """Long tables as consecutive floats of TABLE_ROWS rows (plain LaTeX: no longtable needed)."""
-    out = []
-    chunks = [lines[k:k + TABLE_ROWS] for k in range(0, len(lines), TABLE_ROWS)] or [[]]
+    out, chunks = [], [[]]
+    for block in lines:  # a block (a list of rows: one case) is never split across two floats
+        block = block if isinstance(block, list) else [block]
+        if chunks[-1] and len(chunks[-1]) + len(block) > TABLE_ROWS:
+            chunks.append([])
+        chunks[-1] += block
     for k, chunk in enumerate(chunks):
         cont = f" (continued, part {k + 1} of {len(chunks)})" if k else ""
         out += [r"\begin{table}[htbp]\centering\footnotesize\setlength{\tabcolsep}{3pt}", f"\\caption{{{caption}{cont}}}" + (f"\\label{{{label}}}" if not k else ""),
@@ -104,21 +119,21 @@ def convergence_caption(case, s, row):
 
 
 def chosen(made):
-    """The convergence figures for the section: verified errors of distinct cases with the widest
-    range of n (then the most levels), at most three."""
+    """The convergence figures for the section: verified errors (expected order at least 1/2) of
+    distinct cases with the widest range of n (then the most levels), at most four."""
     cands = []
     for case, s, err, kind, stem in made:
         if kind != "convergence":
             continue
         row = next(r for r in s["rows"] if r["error"] == err)
-        if row["outcome"] == "verified" and len(s["levels"]) >= 3:
+        if row["outcome"] == "verified" and len(s["levels"]) >= 3 and row["expected"] >= 0.5:  # a real convergence
             cands.append((-(s["levels"][-1] / s["levels"][0]), -len(s["levels"]), case, s, row, stem))
     picked, cases = [], set()
     for *_, case, s, row, stem in sorted(cands, key=lambda c: c[:3]):
         if case not in cases:
             picked.append((case, s, row, stem))
             cases.add(case)
-    return picked[:3]
+    return picked[:4]
 
 
 def provenance_text(sweeps, tier):
@@ -141,9 +156,11 @@ def main_section(sweeps, tier, made, figs):
                 n_rows[r["outcome"]] = n_rows.get(r["outcome"], 0) + 1
         s = ss[0]
         shown = [r for r in s["rows"] if num(r.get("expected")) or r["outcome"] == "fail"]
-        for k, r in enumerate(shown):
-            rows.append(f"{tex(case) if k == 0 else ''} & {tex(s.get('summary', '')) if k == 0 else ''} & "
-                        f"{tex(r['error'])} & {sci(r.get('fine_value'))} ($n={s['levels'][-1]}$) & {order_tex(r)} & "
+        rows.append([])
+        block = rows[-1]
+        block.append(wide_row(r"\textbf{" + tex(case) + "}: " + tex(s.get("summary", ""))))
+        for r in shown:
+            block.append(f"\\quad {tex(r['error'])} & {sci(r.get('fine_value'))} ($n={s['levels'][-1]}$) & {order_tex(r)} & "
                         f"{expected_tex(r)} & {outcome_tex(r)} \\\\")
         notes = []
         unclaimed = [r["error"] for r in s["rows"] if r not in shown]
@@ -155,11 +172,9 @@ def main_section(sweeps, tier, made, figs):
             notes.append(f"{len(ss) - 1} further variant{'s' if len(ss) > 2 else ''}: {more.count('verified')} verified, "
                          f"{more.count('no order claimed')} no claim, {more.count('fail')} fail")
         if notes:
-            note = f"\\emph{{{'; '.join(notes)} (supplement)}}"
-            rows.append(f" & \\multicolumn{{6}}{{p{{10.5cm}}}}{{{note}}} \\\\" if shown else
-                        f"{tex(case)} & {tex(s.get('summary', ''))} & \\multicolumn{{5}}{{p{{7.3cm}}}}{{{note}}} \\\\")
-        if s["rows"] or len(ss) > 1:
-            rows[-1] += r" \hline" if case != sorted(sweeps)[-1] else ""
+            block.append(wide_row(r"\quad\emph{" + "; ".join(notes) + " (supplement)}"))
+        if case != sorted(sweeps)[-1]:
+            block[-1] += r" \hline"
     t = [r"% Generated by scripts/report.py --bundle (scripts/bundle.sh): \input{verification} in a paper (needs graphicx).",
          r"\section{Verification}\label{sec:verification}",
          provenance_text(sweeps, tier) +
@@ -173,20 +188,22 @@ def main_section(sweeps, tier, made, figs):
          f"verified, {n_rows['no order claimed']} with no order claimed, {n_rows['fail']} failing. Table~\\ref{{tab:verification}} "
          r"lists the default variant of each case; the supplement (\texttt{verification-supplement.tex}) holds every variant, "
          r"every check (against the reference or, labelled \emph{drift}, against the code's own earlier output) and every figure.", ""]
-    t += tables(r"case & compared & error & at finest $n$ & observed & expected & outcome",
-                r"l p{3.2cm} l l l l l", rows, "Verification summary: the default variant of every case.", "tab:verification")
+    t += tables(r"case: compared against; error & at finest $n$ & observed order & expected & outcome",
+                "l l l l l", rows, "Verification summary: each case (in bold, with what it is compared against) and the "
+                "errors of its default variant that carry an order claim or fail.", "tab:verification")
     picked = chosen(made)
-    names = [copy_figure(case, stem, figs) for case, s, row, stem in picked]
-    if picked:
-        caps = " ".join(f"({'abc'[k]}) {convergence_caption(case, s, row)}" for k, (case, s, row, _) in enumerate(picked))
-        t += figure(names, "Convergence, left to right: " + caps, round(0.98 / len(names), 2))
+    for k in range(0, len(picked), 2):  # two per float: readable at half the text width
+        pair = picked[k:k + 2]
+        names = [copy_figure(case, stem, figs) for case, s, row, stem in pair]
+        caps = " ".join(f"({'ab'[j]}) {convergence_caption(case, s, row)}" for j, (case, s, row, _) in enumerate(pair))
+        t += figure(names, "Convergence" + (", left to right: " if len(pair) > 1 else ": ") + caps, 0.49 if len(pair) > 1 else 0.6)
     return "\n".join(t) + "\n"
 
 
 def supplement(sweeps, made, figs):
     t = [r"% Generated by scripts/report.py --bundle: \input{verification-supplement} (needs graphicx).",
          r"\section{Verification supplement}\label{sec:verification-supplement}",
-         r"Every case variant of Section~\ref{sec:verification}: each error's outcome, every check (\emph{verification}: "
+         r"Every case variant behind the verification section: each error's outcome, every check (\emph{verification}: "
          r"against an independent reference; \emph{drift}: against the code's own earlier output, which shows only that "
          r"nothing changed) and every figure. Figures show the finest run unless they plot against $n$ or wall time.", ""]
     for case, ss in sorted(sweeps.items()):
@@ -199,9 +216,9 @@ def supplement(sweeps, made, figs):
         for s in ss:
             for k, r in enumerate(s["rows"]):
                 rows.append(f"{tex(s['variant']) if k == 0 else ''} & {tex(r['error'])} & {sci(r.get('fine_value'))} ($n={s['levels'][-1]}$) & "
-                            f"{order_tex(r)} & {expected_tex(r)} & {outcome_tex(r)} & {tex(row_reason(s, r))} \\\\")
+                            f"{order_tex(r)} & {expected_tex(r)} & {outcome_tex(r)} & {ragged(tex(row_reason(s, r)))} \\tabularnewline")
         if rows:
-            t += tables("variant & error & at finest $n$ & observed & expected & outcome & why", r"l l l l l l p{4.6cm}", rows,
+            t += tables("variant & error & at finest $n$ & observed & expected & outcome & why", r"l l l l l l p{3.8cm}", rows,
                         f"{tex(case)}: every variant.", f"tab:supp-{slug(case)}")
         checks = []
         for s in ss:
@@ -249,7 +266,7 @@ def write_bundle(bundle, sweeps, tier, made, report_dir):
     bundle = Path(bundle)
     figs = bundle / "figures"
     shutil.rmtree(figs, ignore_errors=True)
-    figs.mkdir(parents=True)
+    figs.mkdir(parents=True, exist_ok=True)
     (bundle / "verification.tex").write_text(main_section(sweeps, tier, made, figs))
     (bundle / "verification-supplement.tex").write_text(supplement(sweeps, made, figs))
     for name, part in (("example.tex", "verification"), ("example-supplement.tex", "verification-supplement")):

@@ -15,6 +15,10 @@
 #include "verification/bench.hpp"
 #include "verification/gravity_command.hpp"
 #include "verification/mpi.hpp"
+#include "verification/ic.hpp"
+#include "verification/runner.hpp"
+#include "verification/score.hpp"
+#include "verification/snapshot/convert_command.hpp"
 #include "verification/sweep.hpp"
 
 namespace fs = std::filesystem;
@@ -220,6 +224,8 @@ int run_main(int argc, char** argv) {
   opt.jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   sweep->add_option("--jobs", opt.jobs, "points run at once as subprocesses (default: cores)")->check(CLI::PositiveNumber);
   sweep->add_flag("--force", opt.force, "rerun points that already have a result of this code version");
+  std::string runner;
+  sweep->add_option("--runner", runner, "external code: COMMAND run per level with {n} {ic} {out} {t_end} {threads}; {out} scored");
 
   auto* verify_cmd = app.add_subcommand("verify", "the default catalogue: sweeps, gates, summary table");
   verify_cmd->add_option("--out", out, "output directory (default runs/verify)");
@@ -232,6 +238,9 @@ int run_main(int argc, char** argv) {
   baseline->require_subcommand(1);
   baseline_up->add_option("--cases", only, "only these cases")->delimiter(',');
   add_gravity_command(app);
+  add_score_command(app);
+  add_ic_command(app);
+  add_convert_command(app);
   add_bench_command(app);
 
   const bool root = mpi::rank() == 0;
@@ -261,6 +270,13 @@ int run_main(int argc, char** argv) {
     if (*sweep) {
       const Case& c = find_case(case_name);
       if (levels_opt->count() > 0) levels = parse_levels(levels_arg);
+      if (!runner.empty()) {
+        const Sweep s = runner_sweep(c, levels.empty() ? c.tier_levels(settings, tier) : levels, settings,
+                                     out.empty() ? fs::path("runs") / (c.name + "-runner") : out, runner);
+        print_rows_header();
+        print_rows(s);
+        return status_of({s});
+      }
       if (mpi::size() > 1) opt.jobs = 1;
       const auto sweeps = run_sweeps(c, tier, levels, expand_variants(settings, vary),
                                      out.empty() ? fs::path("runs") / (c.name + "-sweep") : out, opt);

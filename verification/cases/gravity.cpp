@@ -1,7 +1,9 @@
 // Case `gravity`: Barnes-Hut tree forces (9.4.7, monopole and quadrupole (79)-(89)) against the
 // O(N^2) direct sum, as a function of the opening angle theta; cost against N.
+#include <array>
 #include <chrono>
 #include <cmath>
+#include <map>
 #include <string>
 
 #include "sph/gravity_tree.hpp"
@@ -169,17 +171,70 @@ std::map<std::string, std::string> error_defs() {
       d[key("max", m, theta)] = "max over particles of |a_tree - a_direct| / |a_direct|, " + at;
       d[key("energy", m, theta)] = "|W_tree - W_direct| / |W_direct|, W = 1/2 sum_i m_i phi_i, " + at;
     }
+  d.insert(score_error_defs.begin(), score_error_defs.end());  // sphv score of a code's own accelerations
   return d;
 }
+
+// The largest error measured per model at N = 4096, 5000, 10000 and 20000 (the quick and
+// standard levels; seeds fixed, so deterministic), per statistic and, in order, monopole theta
+// 0.2, 0.5, 0.8, quadrupole theta 0.2, 0.5, 0.8. At fixed theta the error does not converge with
+// N; from level to level it changes by up to 1.6x for p99 (another random sample), 4x for max
+// (one particle) and 55x for the energy (a signed sum that can cancel: Plummer quadrupole,
+// theta 0.2, 2e-9 at N = 10000 and 1.2e-7 at 20000).
+using Row6 = std::array<double, 6>;
+const std::map<std::string, std::array<Row6, 3>> largest_measured = {
+    {"plummer",
+     {{
+       /* p99    */ {6.91e-04, 1.06e-02, 3.36e-02, 4.42e-05, 2.11e-03, 1.28e-02},
+       /* max    */ {2.53e-03, 5.47e-02, 1.77e-01, 1.55e-04, 1.00e-02, 8.76e-02},
+       /* energy */ {8.64e-06, 5.39e-05, 1.09e-04, 1.21e-07, 2.76e-06, 2.09e-05}}}},
+    {"uniform",
+     {{
+       /* p99    */ {1.28e-03, 1.69e-02, 5.39e-02, 8.30e-05, 3.44e-03, 2.24e-02},
+       /* max    */ {4.73e-03, 6.25e-02, 2.89e-01, 3.29e-04, 1.11e-02, 9.39e-02},
+       /* energy */ {6.77e-05, 6.88e-04, 1.39e-03, 1.06e-06, 1.07e-05, 6.31e-05}}}},
+    {"clustered",
+     {{
+       /* p99    */ {1.20e-03, 1.29e-02, 3.93e-02, 8.37e-05, 1.95e-03, 1.02e-02},
+       /* max    */ {3.89e-03, 5.75e-02, 2.75e-01, 4.07e-04, 7.67e-03, 8.52e-02},
+       /* energy */ {3.28e-05, 5.36e-04, 2.09e-03, 6.58e-07, 6.74e-06, 4.25e-05}}}},
+};
 
 std::vector<Check> gates(const Sweep& s) {
   std::vector<Check> c;
   const auto& r = s.runs.back();
   const auto& e = r.errors;
-  const bool plummer = s.runs.back().params.value("model", "") == "plummer";
+  const std::string model = r.params.value("model", std::string("plummer"));
+  const bool plummer = model == "plummer";
+  const auto v = Check::Kind::verification;
+  // Bounds per model, statistic, multipole order and theta at every level: 1.5x the largest
+  // measured value. The quadrupole p99 bounds lie below the monopole's measured p99 at every
+  // theta and level (by 1.2x at theta 0.8 up to 8x at 0.2), so a tree that drops the quadrupole
+  // term fails them (shown by experiment, see the gates report of issue 13). With another
+  // opening criterion (opening=plain) or softening nothing was measured: no bounds then, only
+  // the published numbers and the rates in theta below.
+  const bool measured = r.params.value("opening", std::string("robust")) == "robust" &&
+                        r.params.value("eps", 0.0) == 0.01 && largest_measured.count(model);
+  if (measured)
+    for (const auto& run : s.runs) {
+      const std::string at = "_n" + std::to_string(run.params.value("n", 0L));
+      const auto& m = largest_measured.at(model);
+      int k = 0;
+      for (const auto mp : {sph::Multipole::monopole, sph::Multipole::quadrupole})
+        for (double theta : {0.2, 0.5, 0.8}) {
+          int w = 0;
+          for (const char* what : {"p99", "max", "energy"}) {
+            const std::string name = key(what, mp, theta);
+            c.push_back({"bound_" + name + at, run.errors.at(name), 0.0, 1.5 * m[w][k],
+                         "1.5x the largest measured at N = 4096..20000 (" + model + ")", v, name});
+            ++w;
+          }
+          ++k;
+        }
+    }
+  // Published numbers, weaker than the bounds above but independent of this code:
   // SPH-EXA (ryoanji) test, reference-values.md: theta = 0.2 with quadrupoles: p99 < 3e-3,
   // max < 3e-2, potential energy < 1e-2.
-  const auto v = Check::Kind::verification;
   c.push_back({"p99_quad_0.2", e.at("p99_quad_0.2"), 0.0, 3e-3, "SPH-EXA: theta 0.2 quadrupole p99 < 3e-3", v, "p99_quad_0.2"});
   c.push_back({"max_quad_0.2", e.at("max_quad_0.2"), 0.0, 3e-2, "SPH-EXA: theta 0.2 quadrupole max < 3e-2", v, "max_quad_0.2"});
   c.push_back({"energy_quad_0.5", e.at("energy_quad_0.5"), 0.0, 1e-2, "SPH-EXA: potential energy < 1e-2", v, "energy_quad_0.5"});
@@ -209,7 +264,12 @@ const Registration reg{Case{
                choice_param("model", "plummer", "particle set", {"uniform", "plummer", "clustered"}),
                real_param("eps", 0.01, "Plummer softening length (tree and direct sum)", std::nullopt),
                choice_param("opening", "robust", "opening criterion", {"robust", "plain"})},
-    .levels = {.quick = {4096}, .standard = {5000, 20000}, .full = {5000, 20000}},  // 80000 takes ~5 min (direct sum 47 s, theta 0.2 walks 70-90 s)
+    // CPU time per variant (one core, user): N = 4096 ~0.7 s, 10000 ~2.7 s, 20000 ~8 s (the
+    // direct sum ~4 s of it); quick ~0.7 s, standard ~15 s (measured: 45 s user for the three
+    // variants, `sphv verify --tier standard`, under load). Full: 20000 and SPH-EXA's 1e5
+    // (estimate ~2.5 min for N = 1e5: direct sum ~100 s as N^2, tree walks ~40 s as N log N);
+    // the bounds above were not measured at 1e5.
+    .levels = {.quick = {4096}, .standard = {4096, 10000, 20000}, .full = {20000, 100000}},
     .orders = [](const Params&) {
       OrderClaims o;
       for (const auto& [name, def] : error_defs())

@@ -2,6 +2,8 @@
 // Tree gravity against the direct sum: plain-array conversion, relative errors, percentiles.
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <string>
 #include <vector>
 
 #include "reference/direct_sum.hpp"
@@ -50,5 +52,14 @@ inline Percentiles percentiles(std::vector<double> e) {
   auto at = [&](double p) { return e[std::min(e.size() - 1, std::size_t(std::ceil(p * e.size())) - 1)]; };
   return {at(0.5), at(0.9), at(0.99), e.back()};
 }
+
+// The errors `sphv score gravity` reports for a snapshot's own accelerations (and potential).
+inline const std::map<std::string, std::string> score_error_defs = {
+    {"force_p50", "sphv score: median over particles of |a_code - a_direct| / |a_direct| (particles with a_direct = 0 "
+                  "left out); a_direct: O(N^2) direct sum, G = 1, Plummer softening eps"},
+    {"force_p90", "sphv score: 90th percentile (nearest rank) of the same"},
+    {"force_p99", "sphv score: 99th percentile (nearest rank) of the same"},
+    {"force_max", "sphv score: maximum of the same"},
+    {"energy", "sphv score: |W_code - W_direct| / |W_direct|, W = 1/2 sum_i m_i phi_i (when the snapshot has a potential)"}};
 
 }  // namespace sphv::gravity

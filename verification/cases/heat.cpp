@@ -10,20 +10,14 @@
 
 #include "reference/heat_analytic.hpp"
 #include "verification/case.hpp"
+#include "verification/cases/heat_errors.hpp"
 #include "verification/cases/heat_run.hpp"
 #include "verification/sweep.hpp"
 
 namespace sphv {
 namespace {
 
-constexpr double T0 = 1.0, A = 0.5, sigma0 = 0.1, centre = 0.5;
-
-// ||a - b||_2 / (A sqrt(N)): RMS error relative to the perturbation amplitude; NaN-free.
-double rms_error(const std::vector<double>& a, const std::vector<double>& b) {
-  double s = 0.0;
-  for (std::size_t i = 0; i < a.size(); ++i) s += (a[i] - b[i]) * (a[i] - b[i]);
-  return std::sqrt(s / a.size()) / A;
-}
+using heat::A, heat::T0, heat::centre, heat::rms_error;
 
 template <int D>
 Result run_dim(const Params& prm) {
@@ -35,9 +29,7 @@ Result run_dim(const Params& prm) {
   const sph::ConductionParams k{K, cv};
   const heat::Rate f = heat::make_rate<D>(s, form, k);
   // Diffusivity chi = K / (rho c_v); the summation density of a lattice is uniform.
-  double rho_mean = 0.0;
-  for (double r : s.p.rho) rho_mean += r / N;
-  const double chi = K / (rho_mean * cv);
+  const double chi = heat::diffusivity(s.p.rho, K, cv);
 
   auto field = [&](auto&& T) {
     std::vector<double> u(N);
@@ -48,9 +40,9 @@ Result run_dim(const Params& prm) {
     return u;
   };
   auto sine = [&](double t) { return field([&](const std::vector<double>& x) { return reference::sine_mode(x, t, chi, T0, A, 1); }); };
-  auto gauss = [&](double t) {
-    return field([&](const std::vector<double>& x) { return reference::gaussian_pulse(x, t, chi, T0, A, sigma0, centre); });
-  };
+  std::vector<std::vector<double>> coords(N);
+  for (std::size_t i = 0; i < N; ++i) coords[i] = s.coords(i);
+  auto gauss = [&](double t) { return heat::pulse_exact(coords, t, chi, cv); };
   reference::CvodeOptions opt;
   opt.rtol = prm.real("rtol");
   opt.atol = opt.rtol * A * cv;
@@ -113,7 +105,8 @@ Result run_dim(const Params& prm) {
   }
   r.figures.push_back({"heat_pulse", "Gaussian pulse at t_end (" + form + ")", "x", "T (temperature units)",
                        "linear", "linear", {si, sa, sc}});
-  r.particles.add("x", [&] { std::vector<double> c; for (auto& x : s.p.x) c.push_back(x[0]); return c; }());
+  for (int a = 0; a < D; ++a)
+    r.particles.add(std::string(1, "xyz"[a]), [&] { std::vector<double> c; for (auto& x : s.p.x) c.push_back(x[a]); return c; }());
   r.particles.add("u", cg.u);
   r.particles.add("rho", s.p.rho);
   r.particles.add("h", s.p.h);
@@ -191,7 +184,9 @@ const Registration reg{Case{
                ParamSpec{"jitter", ParamSpec::Kind::Real, "0", "uniform displacement per axis, fraction of dx", std::nullopt, 0.0},
                choice_param("form", "brookshaw", "conduction form", {"brookshaw", "flux_56_58", "flux_57_59"}),
                choice_param("solver", "spgmr", "CVODE linear solver", {"spgmr", "band", "dense"})},
-    .levels = {.quick = {16, 24, 32}, .standard = {16, 24, 32, 48, 64}, .full = {16, 24, 32, 48, 64}},
+    // CPU (user, one thread): quick 0.7 s, standard 5.2 s (2D n = 64 most of it). Explicit steps
+    // grow as n^2 and particles as n^d: full's 2D n = 96 ~10 s, n = 128 ~40 s (estimated).
+    .levels = {.quick = {16, 24, 32}, .standard = {16, 24, 32, 48, 64}, .full = {16, 24, 32, 48, 64, 96, 128}},
     // Band +-0.35 around theory: the fits include pre-asymptotic coarse levels (measured).
     .orders = [](const Params&) {
       const OrderClaim space{2.0, 0.35, "O(h^2) of the symmetric kernel at fixed h/dx (until the lattice moment floor)"};
@@ -199,10 +194,7 @@ const Registration reg{Case{
                          {"time_euler", {2.0, 0.35, "dt = C h^2 / chi, so Euler's O(dt) is O(n^-2)"}},
                          {"time_heun", {4.0, 0.35, "dt = C h^2 / chi, so Heun's O(dt^2) is O(n^-4)"}}};
     },
-    .error_defs = {{"spatial_sine", "rms over particles of |u_CVODE - u_exact| / amplitude at t_end, sine mode (SPH in space, CVODE in time)"},
-                   {"spatial_gauss", "rms over particles of |u_CVODE - u_exact| / amplitude at t_end, Gaussian pulse"},
-                   {"time_euler", "rms over particles of |u_Euler - u_CVODE| / amplitude at t_end, Gaussian pulse, dt = C h^2/chi"},
-                   {"time_heun", "rms over particles of |u_Heun - u_CVODE| / amplitude at t_end, Gaussian pulse, dt = C h^2/chi"}},
+    .error_defs = heat::error_defs,
     .variants = {{}, {"dim=2"}},
     .validate = validate,
     .run = run,

@@ -64,6 +64,7 @@ Result run_dim(const Params& prm) {
              {"neighbours_mean", double(s.nl.pairs()) / N},
              {"lattice_symbol_error", std::abs(heat::brookshaw_symbol<D>(k, hfact, dx) / k.squaredNorm() - 1.0)},
              {"lattice_floor", std::abs(heat::brookshaw_symbol<D>(k_small, hfact, dx) / k_small.squaredNorm() - 1.0)},
+             {"lattice_symbol_error_two_pass", std::abs(heat::two_pass_symbol<D>(k, hfact, dx) / k.squaredNorm() - 1.0)},
              {"trace_73_minus_69", trace_gap / lap_scale}};
   if constexpr (D == 1) {
     const auto b67 = sph::brookshaw_laplacian_1d(p, T, s.nb());
@@ -99,49 +100,111 @@ void validate(const Params& p) {
   if (p.real("jitter") >= 0.5) throw InputError("laplacian: jitter must be < 0.5 (particles may not swap cells)");
 }
 
-// Theory: O(h^2) smoothing error of a symmetric kernel. Band +-0.3: the measured fit mixes the
-// h^4 term at coarse levels and the second-moment floor at fine ones.
+// Theory: O(h^2) smoothing error of a symmetric kernel. On a lattice every error is that of the
+// operator's lattice symbol (gates), so the fitted slopes are a deterministic function of the
+// levels (their se reflects the curvature of the symbol's error, not noise). Measured slopes,
+// quick (16-32) / standard (16-64; 16-48 in 3D):
+//   Brookshaw  1D 1.97 / 1.98, 2D 1.90 / 1.88, 3D 1.91 / 1.94: band 0.15;
+//   two-pass   1D 1.90 / 1.94, 2D 1.78 / 1.84, 3D 1.72 / 1.83: band 0.35 (its symbol |g(k)|^2 is
+//   the square of the gradient's, a kernel twice as wide: the (k h)^4 term weighs more at kh near
+//   pi/2 (n = 16), and the fit over the quick levels sits 0.28 below 2 in 3D).
 OrderClaims orders(const Params& p) {
   if (p.real("jitter") > 0.0) {
     const OrderClaim none = no_order("jittered set at fixed h/dx: the first-moment sum is O(jitter) and is divided by h, "
                                      "so the pointwise error does not converge (grows like 1/h for the two-pass forms)");
     return {{"brookshaw", none}, {"flux_56_58", none}, {"flux_57_59", none}, {"tensor_73", none}};
   }
-  const OrderClaim two{2.0, 0.3, "lattice: O(h^2) (second moment of a symmetric kernel) until the fixed-h/dx "
-                                 "lattice second-moment floor |M2/S0 - 1| (0 in 1D at hfact 2 or 4; 8.6e-4 in 2D, "
-                                 "1.3e-4 in 3D at 4)"};
-  OrderClaims o{{"brookshaw", two}, {"flux_56_58", two}, {"flux_57_59", two}};
+  const std::string why = "lattice: O(h^2) (second moment of a symmetric kernel) until the fixed-h/dx lattice "
+                          "second-moment floor |M2/S0 - 1| (0 in 1D at hfact 2 or 4; 8.6e-4 in 2D, 1.3e-4 in 3D at 4)";
+  const OrderClaim two{2.0, 0.15, why}, two_pass{2.0, 0.35, why};
+  OrderClaims o{{"brookshaw", two}, {"flux_56_58", two_pass}, {"flux_57_59", two_pass}};
   // (73) off the diagonal needs isotropic fourth lattice moments: 1D only (2D/3D level off).
   o["tensor_73"] = p.integer("dim") == 1 ? two
                                          : no_order("tensor (73) in 2D/3D: its off-diagonal part needs isotropic fourth "
-                                                    "lattice moments and levels off near 2e-2 (measured)");
+                                                    "lattice moments and falls slower than h^2 towards a floor (measured "
+                                                    "2.4e-2 in 2D and 1.9e-2 in 3D at n = 64, 1.2 and 1.6 over 16-64)");
   return o;
 }
 
+// Jittered sets (jitter 0.1 dx, seed 7): the errors at the finest quick and standard levels,
+// measured. Deterministic for the fixed seed; a window of 1.5x either side catches a form that
+// got worse and an error that vanished (the disorder error must stay: no convergence).
+struct JitterErrors {
+  int dim;
+  long n;
+  double brookshaw, flux_56_58, flux_57_59, tensor_73;
+};
+constexpr JitterErrors jitter_measured[] = {
+    {1, 32, 0.13984, 0.21082, 0.07754, 0.13984}, {1, 64, 0.25543, 0.66599, 0.09818, 0.25543},
+    {2, 32, 0.05826, 0.14598, 0.10075, 0.16145}, {2, 64, 0.10568, 0.36446, 0.05553, 0.31544},
+    {3, 32, 0.04308, 0.13971, 0.13225, 0.11465}, {3, 48, 0.04136, 0.11879, 0.06415, 0.15571}};
+
 std::vector<Check> gates(const Sweep& s) {
+  using K = Check::Kind;
   std::vector<Check> c;
   const auto& fine = s.runs.back();
-  const bool jittered = fine.extra["jitter"].get<double>() > 0.0;
+  const auto& x = fine.extra;
+  const int dim = x["dim"];
+  const long n = fine.params["n"];
+  auto err = [&](const char* e) { return fine.errors.at(e); };
+  const bool jittered = x["jitter"].get<double>() > 0.0;
   if (!jittered) {
     // The lattice operator is a convolution: its error on an eigenmode is the symbol's error,
     // computed independently by direct lattice sums; agreement to round-off (1e-9 relative).
-    const double pred = fine.extra["lattice_symbol_error"];
-    c.push_back({"brookshaw_equals_symbol", std::abs(fine.errors.at("brookshaw") / pred - 1.0), 0.0, 1e-9,
-                 "sine mode is an eigenmode of the lattice operator", Check::Kind::verification, "brookshaw"});
+    c.push_back({"brookshaw_equals_symbol", std::abs(err("brookshaw") / x["lattice_symbol_error"].get<double>() - 1.0), 0.0,
+                 1e-9, "sine mode is an eigenmode of the lattice operator", K::verification, "brookshaw"});
+    // The same for the two-pass forms with the squared gradient symbol (both forms agree on a
+    // lattice); 1e-9 relative.
+    for (const char* e : {"flux_56_58", "flux_57_59"})
+      c.push_back({std::string(e) + "_equals_symbol", std::abs(err(e) / x["lattice_symbol_error_two_pass"].get<double>() - 1.0),
+                   0.0, 1e-9, "sine mode is an eigenmode of the two-pass lattice operator, symbol |g(k)|^2", K::verification, e});
+    if (dim == 1) {
+      // In 1D the tensor is the scalar (69): the same symbol.
+      c.push_back({"tensor_73_equals_symbol", std::abs(err("tensor_73") / x["lattice_symbol_error"].get<double>() - 1.0),
+                   0.0, 1e-9, "1D: (73) is (69)", K::verification, "tensor_73"});
+    } else {
+      // 2D/3D: the off-diagonal error adds to the trace's: tensor_73 / brookshaw measured 1.52 to
+      // 3.5 (n = 32-64); bounds [1.2, 5] (the ratio grows towards the floor). At most 0.08 (1.5x the largest finest value, 5.2e-2 at
+      // n = 32 in 3D).
+      c.push_back({"tensor_73_over_brookshaw", err("tensor_73") / err("brookshaw"), 1.2, 5.0,
+                   "off-diagonal lattice moments are not isotropic", K::verification, "tensor_73"});
+      c.push_back({"tensor_73_bound", err("tensor_73"), 0.0, 0.08, "measured <= 5.2e-2 at the finest levels, margin 1.5x",
+                   K::verification, "tensor_73"});
+    }
   } else {
     // Disorder adds a non-vanishing first-moment error on top of the lattice error (which the
-    // lattice symbol gives): the jittered error exceeds it (measured 1.3 to 80 times).
-    c.push_back({"jitter_error_over_lattice", fine.errors.at("brookshaw") / fine.extra["lattice_symbol_error"].get<double>(),
-                 1.0, 1e9, "jittered set at fixed h/dx: zeroth-order error does not vanish"});
-    // The chapter's warning, measured: the two-pass symmetric form is noisier than Brookshaw.
-    c.push_back({"flux_56_58_over_brookshaw", fine.errors.at("flux_56_58") / fine.errors.at("brookshaw"), 1.0, 1e9,
-                 "section 9.4.6 and Brookshaw (1985): the two-pass form is sensitive to disorder"});
+    // lattice symbol gives): the jittered error exceeds it, measured 1.26 (3D, n = 32) to 80
+    // (1D, n = 64) times; bounds [1, 120].
+    c.push_back({"jitter_error_over_lattice", err("brookshaw") / x["lattice_symbol_error"].get<double>(), 1.0, 120.0,
+                 "jittered set at fixed h/dx: zeroth-order error does not vanish", K::verification, "brookshaw"});
+    // The chapter's warning, measured: the two-pass symmetric form is noisier than Brookshaw,
+    // 1.51 to 3.45 times at every finest level; bounds [1.2, 5].
+    c.push_back({"flux_56_58_over_brookshaw", err("flux_56_58") / err("brookshaw"), 1.2, 5.0,
+                 "section 9.4.6 and Brookshaw (1985): the two-pass form is sensitive to disorder", K::verification,
+                 "flux_56_58"});
+    for (const auto& m : jitter_measured) {
+      if (m.dim != dim || m.n != n || x["jitter"].get<double>() != 0.1 || fine.params["hfact"] != 4.0) continue;
+      const std::pair<const char*, double> errs[] = {{"brookshaw", m.brookshaw}, {"flux_56_58", m.flux_56_58},
+                                                     {"flux_57_59", m.flux_57_59}, {"tensor_73", m.tensor_73}};
+      for (const auto& [e, v] : errs)
+        c.push_back({std::string(e) + "_jittered_window", err(e), v / 1.5, v * 1.5,
+                     "measured " + std::to_string(v) + " at this level (seed 7), margin 1.5x", K::verification, e});
+    }
   }
   // Errata (72)/(73): with the (d + 2) factor the trace of the tensor is (69) (round-off 1e-12).
-  c.push_back({"trace_73_equals_69", fine.extra["trace_73_minus_69"], 0.0, 1e-12, "errata: (d+2) r^a r^b / r^2 - delta^ab"});
-  if (fine.extra.contains("eq67_minus_eq69"))
-    c.push_back({"eq67_equals_eq69", fine.extra["eq67_minus_eq69"], 0.0, 1e-12, "(69) reduces to (67) in 1D"});
+  c.push_back({"trace_73_equals_69", x["trace_73_minus_69"], 0.0, 1e-12, "errata: (d+2) r^a r^b / r^2 - delta^ab"});
+  if (x.contains("eq67_minus_eq69"))
+    c.push_back({"eq67_equals_eq69", x["eq67_minus_eq69"], 0.0, 1e-12, "(69) reduces to (67) in 1D"});
   return c;
+}
+
+// CPU time per level (one thread, measured on the loaded machine as wall / ~6): 1D and 2D < 0.1 s
+// at n = 64; 3D n = 32 ~3 s, 48 ~10 s, 64 ~16 s, so the 3D standard sweep stops at 48 and 64 is
+// full only; 3D n = 96 (full) ~55 s estimated (N^1 at fixed neighbours, 3.4x n = 64).
+const Levels levels = {.quick = {16, 24, 32}, .standard = {16, 24, 32, 48, 64}, .full = {16, 24, 32, 48, 64, 96, 128}};
+Levels levels_for(const Params& p) {
+  if (p.integer("dim") == 3) return {.quick = {16, 24, 32}, .standard = {16, 24, 32, 48}, .full = {16, 24, 32, 48, 64, 96}};
+  return levels;
 }
 
 const Registration reg{Case{
@@ -153,13 +216,14 @@ const Registration reg{Case{
                integer_param("dim", 1, "dimension 1, 2 or 3"),
                real_param("hfact", 4.0, "support radius / spacing h/dx (4: 1D lattice sums exact, 2D/3D floors 9e-4/1.3e-4)", 0.0),
                ParamSpec{"jitter", ParamSpec::Kind::Real, "0", "uniform displacement per axis, fraction of dx", std::nullopt, 0.0}},
-    .levels = {.quick = {16, 24, 32}, .standard = {16, 24, 32, 48, 64}, .full = {16, 24, 32, 48, 64}},
+    .levels = levels,
     .orders = orders,
     .error_defs = {{"brookshaw", "relative L2 over particles of Brookshaw's (67)/(69) against the exact Laplacian of the sine product"},
                    {"flux_56_58", "relative L2 of the two-pass symmetric form (56)+(58) against the exact Laplacian"},
                    {"flux_57_59", "relative L2 of the two-pass difference form (57)+(59) against the exact Laplacian"},
                    {"tensor_73", "sqrt(sum_i |H_i - H_exact|^2 / sum_i |H_exact|^2), Hessian tensor (73) (Frobenius)"}},
     .variants = {{}, {"dim=2"}, {"dim=3"}, {"jitter=0.1"}, {"dim=2", "jitter=0.1"}, {"dim=3", "jitter=0.1"}},
+    .levels_for = levels_for,
     .validate = validate,
     .run = run,
     .gates = gates,

@@ -7,6 +7,7 @@
 
 #include "verification/case.hpp"
 #include "verification/cases/hydro_step_params.hpp"
+#include "verification/cases/sod_errors.hpp"
 #include "verification/cases/sod_tube.hpp"
 #include "verification/sweep.hpp"
 
@@ -109,19 +110,7 @@ Result run(const Params& p) {
   r.verdict = run.outcome.verdict;
   if (r.verdict == "ok" && p.text("preset") != "sod") r.verdict = "stable";
   if (r.verdict == "ok" || r.verdict == "stable") {
-    // L1 over [0, 1]: particle volumes m/rho as weights.
-    double vol = 0.0, e_rho = 0.0, e_v = 0.0, e_p = 0.0, e_u = 0.0;
-    for (std::size_t i = 0; i < run.active; ++i) {
-      if (run.x[i] < 0.0 || run.x[i] > 1.0) continue;
-      const auto s = exact.sample(run.x[i], pr.t_end);
-      const double w = run.m[i] / run.rho[i];
-      vol += w;
-      e_rho += w * std::abs(run.rho[i] - s.rho);
-      e_v += w * std::abs(run.v[i] - s.u);
-      e_p += w * std::abs(run.p[i] - s.p);
-      e_u += w * std::abs(run.u[i] - s.e);
-    }
-    r.errors = {{"L1_rho", e_rho / vol}, {"L1_v", e_v / vol}, {"L1_p", e_p / vol}, {"L1_u", e_u / vol}};
+    r.errors = tube_l1_errors(run.x, run.v, run.rho, run.p, run.u, run.m, run.active, exact, pr.t_end);
     r.figures = {profile("rho", "density rho", run, run.rho, exact, pr.t_end, n, D),
                  profile("v", "velocity v_x", run, run.v, exact, pr.t_end, n, D),
                  profile("p", "pressure p", run, run.p, exact, pr.t_end, n, D),
@@ -243,10 +232,7 @@ Case make_case(int dim) {
   // (Phantom's default, ~18 and ~58 neighbours).
   c.params = params(dim == 1 ? 400 : dim == 2 ? 100 : 32, dim == 1 ? 4.0 : 2.4);
   c.orders = [dim](const Params& p) { return first_order(p, dim); };
-  const std::string l1 = "sum_i (m_i/rho_i) |q_i - q_exact(x_i)| / sum_i m_i/rho_i over particles in the tube [0, 1] at "
-                         "t_end, q = ";
-  c.error_defs = {{"L1_rho", l1 + "density"}, {"L1_v", l1 + "velocity v_x"}, {"L1_p", l1 + "pressure"},
-                  {"L1_u", l1 + "specific internal energy"}};
+  c.error_defs = tube_error_defs;
   c.expects_unstable = [](const Params& p) { return p.text("timestep") == "chapter"; };
   c.validate = [](const Params& p) { problem(p); };
   if (dim == 1) {
@@ -283,4 +269,7 @@ const Registration reg2{make_case(2)};
 const Registration reg3{make_case(3)};
 
 }  // namespace
+
+TubeProblem tube_problem(const Params& p) { return problem(p); }
+
 }  // namespace sphv

@@ -1,0 +1,77 @@
+#pragma once
+// The Sedov blast's errors and profiles at time t, shared by `sphv run` and `sphv score`.
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "reference/sedov.hpp"
+#include "sph/vec.hpp"
+#include "verification/cases/extreme_hydro.hpp"
+#include "verification/cases/radial_result.hpp"
+#include "verification/params.hpp"
+
+namespace sphv::sedov {
+
+inline const std::map<std::string, std::string> error_defs = {
+    {"shock_radius",
+     "|R_front - R| / R, R = xi_0 (E t^2 / rho0)^(1/(d+2)); R_front: where the mean density in radial bins of width "
+     "0.25/n on [0, 0.5) falls, going outwards from its peak bin, through (rho0 + peak) / 2 (linear between bin centres)"},
+    {"L1_rho", "sum over particles with r < 1.2 R of (m_i/rho_i) |rho_i - rho_exact(r_i, t)|, divided by the ball's "
+               "volume vol_d(1.2 R) and by rho0 (r from the blast centre; exact: the Sedov-Taylor similarity solution)"}};
+
+// The shock radius sphv's runs end at (box half-width 0.5).
+constexpr double R_target = 0.3;
+
+// The end time: the parameter t, or (t = 0) when the shock reaches R_target.
+inline double end_time(const Params& p) {
+  const double E = p.real("E"), rho0 = p.real("rho0"), t = p.real("t");
+  const int d = static_cast<int>(p.integer("dim"));
+  return t > 0.0 ? t : std::sqrt(std::pow(R_target / reference::Sedov(d, p.real("gamma")).xi0(), d + 2) * rho0 / E);
+}
+
+// Fills r.errors, r.functionals, the profile figures and extras from the particles at time t
+// (positions relative to the blast centre); n: particles per side of the unit box (bins 0.25 / n).
+template <int D>
+void measure(Result& r, const std::vector<sph::Vec<D>>& x, const std::vector<sph::Vec<D>>& v, const std::vector<double>& m,
+             const std::vector<double>& rho, int n, double E, double rho0, double t, const reference::Sedov& exact) {
+  const double R = exact.shock_radius(E, rho0, t), dx = 1.0 / n;
+  std::vector<double> rad(x.size());
+  for (std::size_t i = 0; i < x.size(); ++i) rad[i] = x[i].norm();
+  // Shock radius: where the density profile (binned at half the spacing) falls, going outwards
+  // from its peak, through half-way between the ambient density and the peak. SPH smooths the
+  // jump over a few h; the half-rise point of a symmetrically smoothed jump is the jump, while the
+  // smoothed peak trails it by about half a kernel width.
+  const extreme::Profile prof = extreme::radial_profile(rad, rho, 0.5, 2 * n);
+  const auto peak = std::max_element(prof.mean.begin(), prof.mean.end()) - prof.mean.begin();
+  const double R_front = radial::falling_through(prof, 0.5 * (rho0 + prof.mean[peak]), prof.r[peak], prof.r[peak]);
+  // L1 density error over the ball r < 1.2 R (shocked gas and some ambient gas), per unit volume
+  // of the ball: sum of particle volumes m / rho times |rho - rho_exact|, over the ball's volume.
+  const double ball = (D == 2 ? M_PI : 4.0 / 3.0 * M_PI) * std::pow(1.2 * R, D);
+  double l1 = 0.0;
+  for (std::size_t i = 0; i < x.size(); ++i)
+    if (rad[i] < 1.2 * R) l1 += m[i] / rho[i] * std::abs(rho[i] - exact.density(rad[i], E, rho0, t));
+  r.errors = {{"shock_radius", std::abs(R_front - R) / R}, {"L1_rho", l1 / ball / rho0}};
+  r.functionals = {{"R_front", R_front}, {"rho_peak", prof.mean[peak]}};
+  r.extra["R_front"] = R_front;
+  r.extra["R_peak"] = prof.r[peak];
+  r.extra["rho_peak_binned"] = prof.mean[peak];
+  r.extra["rho_peak_exact"] = exact.g(1.0) * rho0;
+  r.extra["bin_width"] = 0.5 * dx;
+
+  const std::string dim = std::to_string(D) + "D";
+  r.figures.push_back(radial::profile_figure(
+      "profile_rho", "Sedov " + dim + ", n = " + std::to_string(n) + ": density at t = " + std::to_string(t),
+      "r / R(t)", "rho / rho0", rad, rho, 1.5 * R, R, "Sedov-Taylor (similarity solution)",
+      [&](double s) { return exact.density(s, E, rho0, t) / rho0; }));
+  if (v.empty()) return;
+  const double U = exact.shock_speed(E, rho0, t);
+  std::vector<double> v_r(x.size());
+  for (std::size_t i = 0; i < x.size(); ++i) v_r[i] = v[i].dot(x[i]) / std::max(rad[i], 1e-300) / U;
+  r.figures.push_back(radial::profile_figure("profile_v", "Sedov " + dim + ": radial velocity", "r / R(t)",
+                                             "v_r / (dR/dt)", rad, v_r, 1.5 * R, R, "Sedov-Taylor",
+                                             [&](double s) { return exact.f(s / R); }));
+}
+
+}  // namespace sphv::sedov

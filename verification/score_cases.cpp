@@ -1,0 +1,155 @@
+// The scorers of `sphv score`: each reads the columns its case needs from a snapshot and calls
+// the same error function as the case's own run (sod_errors.hpp, sedov_errors.hpp,
+// noh_errors.hpp, heat_errors.hpp, gravity_compare.hpp).
+#include <cmath>
+
+#include "reference/riemann.hpp"
+#include "reference/sedov.hpp"
+#include "verification/cases/centre_param.hpp"
+#include "verification/cases/gravity_compare.hpp"
+#include "verification/cases/heat_errors.hpp"
+#include "verification/cases/noh_errors.hpp"
+#include "verification/cases/sedov_errors.hpp"
+#include "verification/cases/sod_errors.hpp"
+#include "verification/gravity_input.hpp"
+#include "verification/score.hpp"
+
+namespace sphv {
+namespace {
+
+// Positions (minus centre) or velocities of the first D axes as vectors.
+template <int D>
+std::vector<sph::Vec<D>> vectors(const Snapshot& s, const std::string& prefix, const std::string& who,
+                                 const sph::Vec<D>& centre = sph::Vec<D>::Zero()) {
+  std::vector<sph::Vec<D>> v(s.size());
+  for (int d = 0; d < D; ++d) {
+    const auto& c = s.at(prefix + std::string(1, "xyz"[d]), who);
+    for (std::size_t i = 0; i < v.size(); ++i) v[i][d] = c[i] - centre[d];
+  }
+  return v;
+}
+
+// u, or (gamma - 1)^-1 p / rho from the pressure when the snapshot has no u (SPH-EXA).
+std::vector<double> internal_energy(const Snapshot& s, double gamma, const std::string& who) {
+  if (s.has("u") || !s.has("p")) return s.at("u", who + " (or p)");
+  const auto &p = s.at("p", who), &rho = s.at("rho", who);
+  std::vector<double> u(s.size());
+  for (std::size_t i = 0; i < u.size(); ++i) u[i] = p[i] / ((gamma - 1.0) * rho[i]);
+  return u;
+}
+std::vector<double> pressure(const Snapshot& s, double gamma, const std::string& who) {
+  if (s.has("p") || !s.has("u")) return s.at("p", who + " (or u)");
+  const auto &u = s.at("u", who), &rho = s.at("rho", who);
+  std::vector<double> p(s.size());
+  for (std::size_t i = 0; i < p.size(); ++i) p[i] = (gamma - 1.0) * rho[i] * u[i];
+  return p;
+}
+
+void positive(const Snapshot& s, const std::string& name, const std::string& who) {
+  const auto& c = s.at(name, who);
+  for (std::size_t i = 0; i < c.size(); ++i)
+    if (!(c[i] > 0.0))
+      throw InputError(s.path.string() + ": " + s.taken_from.at(name) + " of particle " + std::to_string(i) + " is " +
+                       std::to_string(c[i]) + " (must be > 0)");
+}
+
+Result score_tube(const Params& prm, const Snapshot& s) {
+  const TubeProblem pr = tube_problem(prm);
+  const std::string who = "the shock tube";
+  positive(s, "rho", who);
+  positive(s, "m", who);
+  const reference::RiemannSolution exact(pr.left, pr.right, pr.gamma, pr.x0);
+  Result r;
+  r.errors = tube_l1_errors(s.at("x", who), s.at("vx", who), s.at("rho", who), pressure(s, pr.gamma, who),
+                            internal_energy(s, pr.gamma, who), s.at("m", who), s.size(), exact, pr.t_end);
+  return r;
+}
+
+Result score_sedov(const Params& prm, const Snapshot& s) {
+  const std::string who = "sedov";
+  positive(s, "rho", who);
+  positive(s, "m", who);
+  const reference::Sedov exact(static_cast<int>(prm.integer("dim")), prm.real("gamma"));
+  if (!(prm.real("t") > 0.0)) throw InputError(s.path.string() + ": sedov needs a time t > 0");
+  Result r;
+  by_dimension(prm, [&](auto dim) {
+    constexpr int D = decltype(dim)::value;
+    if constexpr (D == 1) throw InputError("sedov: dim must be 2 or 3");
+    else {
+      const auto c = radial::centre<D>(prm);
+      const auto v = s.has("vx") ? vectors<D>(s, "v", who) : std::vector<sph::Vec<D>>{};
+      sedov::measure<D>(r, vectors<D>(s, "", who, c), v, s.at("m", who), s.at("rho", who),
+                        static_cast<int>(prm.integer("n")), prm.real("E"), prm.real("rho0"), prm.real("t"), exact);
+    }
+    return r;
+  });
+  return r;
+}
+
+Result score_noh(const Params& prm, const Snapshot& s) {
+  const std::string who = "noh";
+  positive(s, "rho", who);
+  positive(s, "m", who);
+  Result r;
+  by_dimension(prm, [&](auto dim) {
+    constexpr int D = decltype(dim)::value;
+    const auto c = radial::centre<D>(prm);
+    noh::measure<D>(r, vectors<D>(s, "", who, c), vectors<D>(s, "v", who), s.at("m", who), s.at("rho", who),
+                    internal_energy(s, prm.real("gamma"), who), prm.real("t_end"), prm.real("gamma"), prm.integer("n"));
+    return r;
+  });
+  return r;
+}
+
+Result score_heat(const Params& prm, const Snapshot& s) {
+  const std::string who = "heat";
+  positive(s, "rho", who);
+  const int D = static_cast<int>(prm.integer("dim"));
+  std::vector<std::vector<double>> coords(s.size(), std::vector<double>(D));
+  for (int a = 0; a < D; ++a) {
+    const auto& c = s.at(std::string(1, "xyz"[a]), who);
+    for (std::size_t i = 0; i < c.size(); ++i) coords[i][a] = c[i];
+  }
+  const double cv = prm.real("c_v");
+  const double chi = heat::diffusivity(s.at("rho", who), prm.real("K"), cv);
+  Result r;
+  r.errors["spatial_gauss"] = heat::rms_error(s.at("u", who), heat::pulse_exact(coords, prm.real("t_end"), chi, cv));
+  r.extra["chi"] = chi;
+  return r;
+}
+
+Result score_gravity(const Params& prm, const Snapshot& s) {
+  const std::string who = "gravity (the code's accelerations ax, ay, az)";
+  const gravity::ParticleSet set = gravity_particles(s, prm.real("eps"));
+  sph::GravityField code;
+  code.a = vectors<3>(s, "a", who);
+  if (s.has("phi")) code.phi = s.at("phi", who);
+  const auto d = gravity::direct(set.x, set.m, prm.real("eps"));
+  const auto p = gravity::percentiles(finite_values(gravity::relative_force_error(code, d)));
+  Result r;
+  r.errors = {{"force_p50", p.p50}, {"force_p90", p.p90}, {"force_p99", p.p99}, {"force_max", p.max}};
+  if (s.has("phi")) {
+    const double wd = gravity::potential_energy(set.m, d.phi), wc = gravity::potential_energy(set.m, code.phi);
+    r.errors["energy"] = std::abs(wc - wd) / std::abs(wd);
+  }
+  return r;
+}
+
+double tube_t_end(const Params& p) { return tube_problem(p).t_end; }
+double real_t_end(const Params& p) { return p.real("t_end"); }
+
+}  // namespace
+
+const std::map<std::string, Scorer>& scorers() {
+  static const std::map<std::string, Scorer> s = {
+      {"sod", {"t_end", score_tube, tube_t_end}},
+      {"sod2d", {"t_end", score_tube, tube_t_end}},
+      {"sod3d", {"t_end", score_tube, tube_t_end}},
+      {"sedov", {"t", score_sedov, sedov::end_time, true}},
+      {"noh", {"t_end", score_noh, real_t_end}},
+      {"heat", {"t_end", score_heat, real_t_end}},
+      {"gravity", {"", score_gravity, {}}}};
+  return s;
+}
+
+}  // namespace sphv

@@ -1,0 +1,78 @@
+# sphv score, ic, convert and sweep --runner from the command line (issue 15).
+set(_sdir ${CMAKE_BINARY_DIR}/score_cli)
+file(MAKE_DIRECTORY ${_sdir})
+file(WRITE ${_sdir}/nan.csv "# time = 0.25\nx,vx,m,rho,u\n0.1,0,1,1,nan\n")
+file(WRITE ${_sdir}/inf.csv "# time = 0.25\nx,vx,m,rho,u\n0.1,0,1,inf,1\n")
+file(WRITE ${_sdir}/missing_column.csv "# time = 0.25\nx,vx,m,u\n0.1,0,1,1\n")
+file(WRITE ${_sdir}/no_time.csv "x,vx,m,rho,u\n0.1,0,1,1,1\n")
+file(WRITE ${_sdir}/zero_particles.csv "# time = 0.25\nx,vx,m,rho,u\n")
+file(WRITE ${_sdir}/short_row.csv "# time = 0.25\nx,vx,m,rho,u\n0.1,0,1,1\n")
+file(WRITE ${_sdir}/not_hdf5.h5 "this is not an HDF5 file\n")
+# The first 600 bytes of the SPH-EXA fixture: a truncated HDF5 file.
+add_test(NAME score_fixture_truncated COMMAND bash -c
+  "head -c 600 ${CMAKE_SOURCE_DIR}/verification/tests/data/sphexa-sedov-n12.h5 > ${_sdir}/truncated.h5")
+set_tests_properties(score_fixture_truncated PROPERTIES FIXTURES_SETUP score_truncated)
+
+# Bad snapshot: exit 2, one line "sphv: error: ..." naming the file, no result written.
+function(score_refuses name args file)
+  add_test(NAME score_refuses_${name} COMMAND bash -c
+    "rm -rf out_${name}; $<TARGET_FILE:sphv> score ${args} --snapshot ${file} --out out_${name} 2> err_${name}.txt; s=$?; cat err_${name}.txt; test $s -eq 2 && test ! -e out_${name} && test $(wc -l < err_${name}.txt) -eq 1 && grep -q '^sphv: error: .*${file}' err_${name}.txt && echo PASS"
+    WORKING_DIRECTORY ${_sdir})
+  set_tests_properties(score_refuses_${name} PROPERTIES PASS_REGULAR_EXPRESSION "PASS")
+endfunction()
+score_refuses(nan sod ${_sdir}/nan.csv)
+score_refuses(inf sod ${_sdir}/inf.csv)
+score_refuses(missing_column sod ${_sdir}/missing_column.csv)
+score_refuses(no_time sod ${_sdir}/no_time.csv)
+score_refuses(zero_particles sod ${_sdir}/zero_particles.csv)
+score_refuses(short_row sod ${_sdir}/short_row.csv)
+score_refuses(not_hdf5 "sod --format swift" ${_sdir}/not_hdf5.h5)
+score_refuses(truncated_hdf5 sedov ${_sdir}/truncated.h5)
+set_tests_properties(score_refuses_truncated_hdf5 PROPERTIES FIXTURES_REQUIRED score_truncated)
+score_refuses(wrong_dimension "sedov --set dim=2" ${CMAKE_SOURCE_DIR}/verification/tests/data/sphexa-sedov-n12.h5)
+score_refuses(missing_file sod ${_sdir}/no_such_file.csv)
+sphv_refuses(score_unknown_case score no_such_case --snapshot ${_sdir}/nan.csv)
+sphv_refuses(score_case_without_scorer score kernel --snapshot ${_sdir}/nan.csv)
+sphv_refuses(ic_case_without_writer ic kernel --out ${_sdir}/ic.csv)
+
+# The SPH-EXA fixture scores as a Sedov blast from the command line (the last step by default).
+add_test(NAME score_sphexa_h5part COMMAND sphv score sedov --snapshot ${CMAKE_SOURCE_DIR}/verification/tests/data/sphexa-sedov-n12.h5 --out ${_sdir}/sphexa)
+set_tests_properties(score_sphexa_h5part PROPERTIES PASS_REGULAR_EXPRESSION "h5part, 3D, t = 0.03019[0-9]*\\): x <- /Step#1/x(.|\n)*L1_rho=")
+
+# sphv gravity --input: refused inputs and the CSV reader's spellings.
+file(WRITE ${_sdir}/coincident.csv "x,y,z,m\n0,0,0,1\n1,0,0,1\n0,0,0,1\n")
+file(WRITE ${_sdir}/zero_mass.csv "x,y,z,m\n0,0,0,1\n1,0,0,0\n")
+file(WRITE ${_sdir}/spelled.txt "# from another code\nPos_X Pos_Y Pos_Z Mass\n0 0 0 1\n1 0 0 1\n0 1 0 0.5\n")
+sphv_refuses(gravity_coincident gravity --input ${_sdir}/coincident.csv --out ${_sdir}/g.csv)
+sphv_refuses(gravity_zero_mass gravity --input ${_sdir}/zero_mass.csv --out ${_sdir}/g.csv)
+add_test(NAME gravity_coincident_softened COMMAND sphv gravity --input ${_sdir}/coincident.csv --softening 0.1 --out ${_sdir}/g_soft.csv)
+set_tests_properties(gravity_coincident_softened PROPERTIES PASS_REGULAR_EXPRESSION "relative force error")
+add_test(NAME gravity_spellings COMMAND sphv gravity --input ${_sdir}/spelled.txt --out ${_sdir}/g_spelled.csv)
+set_tests_properties(gravity_spellings PROPERTIES PASS_REGULAR_EXPRESSION "x <- Pos_X, y <- Pos_Y, z <- Pos_Z, m <- Mass")
+add_test(NAME gravity_no_direct COMMAND sphv gravity --input ${_sdir}/spelled.txt --no-direct --out ${_sdir}/g_tree.csv)
+set_tests_properties(gravity_no_direct PROPERTIES PASS_REGULAR_EXPRESSION "direct sum skipped")
+
+# sweep --runner end to end: the repository's stand-in external code (sphv run, converted to
+# each format) scored per level must give exactly the errors of a plain sphv sweep.
+# (The sweeps' exit status is the gates' verdict at these small levels, not the runner's: the
+# comparison decides.)
+add_test(NAME runner_reference_sweep COMMAND bash -c
+  "rm -rf plain; $<TARGET_FILE:sphv> --threads 1 sweep sod --levels 100,200 --jobs 1 --out plain; test -s plain/sweep.json"
+  WORKING_DIRECTORY ${_sdir})
+set_tests_properties(runner_reference_sweep PROPERTIES FIXTURES_SETUP runner_plain)
+foreach(_fmt csv swift h5part)
+  add_test(NAME runner_sweep_${_fmt} COMMAND bash -c
+    "rm -rf runner_${_fmt} && $<TARGET_FILE:sphv> --threads 1 sweep sod --levels 100,200 --runner 'bash ${CMAKE_SOURCE_DIR}/verification/tests/external_code.sh $<TARGET_FILE:sphv> sod {n} {out} ${_fmt}' --out runner_${_fmt}; python3 ${CMAKE_SOURCE_DIR}/verification/tests/compare_runner_sweep.py runner_${_fmt} plain"
+    WORKING_DIRECTORY ${_sdir})
+  set_tests_properties(runner_sweep_${_fmt} PROPERTIES FIXTURES_REQUIRED runner_plain PASS_REGULAR_EXPRESSION "PASS: 2 levels")
+endforeach()
+# A failing command becomes the level's verdict (no abort), and the report reads the sweep.
+add_test(NAME runner_failing_command COMMAND bash -c
+  "rm -rf runner_fail && $<TARGET_FILE:sphv> sweep sod --levels 100 --runner 'exit 7' --out runner_fail; grep -q 'runner exit status 7' runner_fail/n100/result.json && echo PASS"
+  WORKING_DIRECTORY ${_sdir})
+set_tests_properties(runner_failing_command PROPERTIES PASS_REGULAR_EXPRESSION "PASS")
+# {ic}: the external code may start from sphv's initial conditions.
+add_test(NAME runner_ic_placeholder COMMAND bash -c
+  "rm -rf runner_ic && $<TARGET_FILE:sphv> sweep sod --levels 100 --runner 'test -s {ic} && grep -q ^x,vx,m,rho,u,p,h {ic} && bash ${CMAKE_SOURCE_DIR}/verification/tests/external_code.sh $<TARGET_FILE:sphv> sod {n} {out} csv' --out runner_ic; grep -q '\"verdict\": \"ok\"' runner_ic/n100/result.json && echo PASS"
+  WORKING_DIRECTORY ${_sdir})
+set_tests_properties(runner_ic_placeholder PROPERTIES PASS_REGULAR_EXPRESSION "PASS")

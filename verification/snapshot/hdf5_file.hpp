@@ -1,0 +1,122 @@
+#pragma once
+// The few HDF5 C library calls the snapshot readers and writers share: handles closed on scope
+// exit, whole datasets and attributes as doubles (HDF5 converts float32 and integers), and files
+// written through a temporary name and a rename.
+#include <hdf5.h>
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "verification/params.hpp"
+
+namespace sphv::h5 {
+
+// An HDF5 identifier closed by its own close function.
+class Handle {
+ public:
+  Handle(hid_t id, herr_t (*close)(hid_t)) : id_(id), close_(close) {}
+  Handle(const Handle&) = delete;
+  Handle& operator=(const Handle&) = delete;
+  ~Handle() {
+    if (id_ >= 0) close_(id_);
+  }
+  operator hid_t() const { return id_; }
+  bool ok() const { return id_ >= 0; }
+
+ private:
+  hid_t id_;
+  herr_t (*close_)(hid_t);
+};
+
+// Opens a file for reading; HDF5's own error stack printing is switched off (errors become one
+// InputError line naming the file).
+inline hid_t open_read(const std::filesystem::path& path) {
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  const hid_t f = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  if (f < 0) throw InputError(path.string() + ": not a readable HDF5 file (truncated or damaged?)");
+  return f;
+}
+
+inline bool exists(hid_t loc, const std::string& name) { return H5Lexists(loc, name.c_str(), H5P_DEFAULT) > 0; }
+
+// A whole dataset as doubles, with its dimensions.
+inline std::vector<double> read_dataset(hid_t loc, const std::string& name, const std::string& file,
+                                        std::vector<hsize_t>& dims) {
+  const Handle ds(H5Dopen2(loc, name.c_str(), H5P_DEFAULT), H5Dclose);
+  if (!ds.ok()) throw InputError(file + ": cannot open dataset " + name);
+  const Handle space(H5Dget_space(ds), H5Sclose);
+  const int rank = H5Sget_simple_extent_ndims(space);
+  if (rank < 0 || rank > 2) throw InputError(file + ": dataset " + name + " has rank " + std::to_string(rank) + " (expected 1 or 2)");
+  dims.assign(rank, 0);
+  H5Sget_simple_extent_dims(space, dims.data(), nullptr);
+  hsize_t total = 1;
+  for (hsize_t d : dims) total *= d;
+  std::vector<double> v(total);
+  if (total > 0 && H5Dread(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()) < 0)
+    throw InputError(file + ": cannot read dataset " + name + " (truncated file or a non-numeric type)");
+  return v;
+}
+
+// A numeric attribute's values, or nothing when it is absent.
+inline std::optional<std::vector<double>> read_attribute(hid_t obj, const std::string& name, const std::string& file) {
+  if (H5Aexists(obj, name.c_str()) <= 0) return std::nullopt;
+  const Handle a(H5Aopen(obj, name.c_str(), H5P_DEFAULT), H5Aclose);
+  const Handle space(H5Aget_space(a), H5Sclose);
+  const hssize_t n = H5Sget_simple_extent_npoints(space);
+  std::vector<double> v(n > 0 ? n : 0);
+  if (!a.ok() || n <= 0 || H5Aread(a, H5T_NATIVE_DOUBLE, v.data()) < 0)
+    throw InputError(file + ": cannot read attribute " + name + " as numbers");
+  return v;
+}
+
+// Writing: a new file at a temporary name, renamed by `commit` once complete.
+class Writer {
+ public:
+  explicit Writer(std::filesystem::path path) : path_(std::move(path)), tmp_(path_.string() + ".tmp.h5") {
+    if (!path_.parent_path().empty()) std::filesystem::create_directories(path_.parent_path());
+    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+    file_ = H5Fcreate(tmp_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+    if (file_ < 0) throw std::runtime_error("cannot write " + tmp_);
+  }
+  ~Writer() {  // an unfinished file (an error on the way) is removed
+    for (hid_t g : groups_) H5Gclose(g);
+    if (file_ >= 0) H5Fclose(file_), std::filesystem::remove(tmp_);
+  }
+  hid_t file() const { return file_; }
+  hid_t group(const std::string& name) {
+    groups_.push_back(H5Gcreate2(file_, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
+    if (groups_.back() < 0) throw std::runtime_error("cannot write group " + name + " in " + tmp_);
+    return groups_.back();
+  }
+  void dataset(hid_t loc, const std::string& name, const std::vector<double>& v, std::vector<hsize_t> dims) {
+    const Handle space(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr), H5Sclose);
+    const Handle ds(H5Dcreate2(loc, name.c_str(), H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Dclose);
+    if (!ds.ok() || H5Dwrite(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()) < 0)
+      throw std::runtime_error("cannot write dataset " + name + " in " + tmp_);
+  }
+  void attribute(hid_t loc, const std::string& name, const std::vector<double>& v, hid_t type = H5T_IEEE_F64LE) {
+    const hsize_t n = v.size();
+    const Handle space(H5Screate_simple(1, &n, nullptr), H5Sclose);
+    const Handle a(H5Acreate2(loc, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
+    if (!a.ok() || H5Awrite(a, H5T_NATIVE_DOUBLE, v.data()) < 0)
+      throw std::runtime_error("cannot write attribute " + name + " in " + tmp_);
+  }
+  void commit() {
+    for (hid_t g : groups_) H5Gclose(g);
+    groups_.clear();
+    const herr_t e = H5Fclose(file_);
+    file_ = -1;
+    if (e < 0) throw std::runtime_error("cannot write " + tmp_);
+    std::filesystem::rename(tmp_, path_);
+  }
+
+ private:
+  std::filesystem::path path_;
+  std::string tmp_;
+  hid_t file_ = -1;
+  std::vector<hid_t> groups_;
+};
+
+}  // namespace sphv::h5

@@ -1,0 +1,264 @@
+// sphv score: the snapshot readers (CSV, SWIFT/GADGET HDF5, H5Part) and the round trip
+// `sphv run` -> snapshot in each format -> score, which must give the run's errors exactly (the
+// same function computes them from the same numbers: CSV and HDF5 keep doubles exactly).
+#include <hdf5.h>
+#include <unistd.h>
+
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "sph/gravity_tree.hpp"
+#include "verification/cases/gravity_compare.hpp"
+#include "verification/cases/gravity_models.hpp"
+#include "verification/ic.hpp"
+#include "verification/score.hpp"
+#include "verification/snapshot/snapshot.hpp"
+
+namespace fs = std::filesystem;
+using namespace sphv;
+
+namespace {
+
+fs::path scratch(const std::string& name) {
+  const auto d = fs::temp_directory_path() / ("sphv_score_test_" + std::to_string(getpid())) / name;
+  fs::create_directories(d.parent_path());
+  return d;
+}
+
+void write_text(const fs::path& p, const std::string& text) {
+  std::ofstream f(p, std::ios::binary);
+  f << text;
+}
+
+// A run's particles.csv as a snapshot at time t (sphv's own column names).
+Snapshot from_run(const Result& r, double t) {
+  Snapshot s;
+  for (std::size_t k = 0; k < r.particles.names.size(); ++k) {
+    s.columns[r.particles.names[k]] = r.particles.columns[k];
+    s.taken_from[r.particles.names[k]] = r.particles.names[k];
+  }
+  s.dim = s.has("z") ? 3 : s.has("y") ? 2 : 1;
+  s.time = t;
+  return s;
+}
+
+// Runs the case, writes its particles in every format, reads each back and scores it.
+void require_round_trip(const std::string& case_name, const std::vector<std::string>& settings,
+                        const std::vector<std::string>& formats = {"csv", "swift", "h5part"}) {
+  const Case& c = find_case(case_name);
+  const Result run = run_case(c, c.parse(settings));
+  REQUIRE((run.verdict == "ok" || run.verdict == "stable"));
+  REQUIRE(!run.errors.empty());
+  const double t = run.extra.contains("t_reached") ? run.extra["t_reached"].get<double>() : run.params["t_end"].get<double>();
+  for (const auto& format : formats) {
+    INFO(case_name << " via " << format);
+    const auto file = scratch(case_name + "." + format);
+    write_snapshot(from_run(run, t), file, format);
+    const Snapshot s = read_snapshot(file);
+    CHECK(s.format == format);
+    REQUIRE(s.time);
+    CHECK(*s.time == t);
+    const Result r = score_snapshot(c, settings, s);
+    REQUIRE(!r.errors.empty());
+    for (const auto& [name, value] : r.errors) {
+      INFO(name);
+      REQUIRE(run.errors.count(name));
+      CHECK(value == run.errors.at(name));  // exactly: same function, same doubles
+    }
+  }
+}
+
+}  // namespace
+
+TEST_CASE("score: sod round trip through CSV, SWIFT and H5Part reproduces sphv run", "[score]") {
+  require_round_trip("sod", {"n=100"});
+}
+
+TEST_CASE("score: sod2d round trip (2D tube read along x)", "[score]") {
+  require_round_trip("sod2d", {"n=16"}, {"swift"});
+}
+
+TEST_CASE("score: sedov 2D round trip reproduces shock_radius and L1_rho", "[score]") {
+  require_round_trip("sedov", {"n=16"}, {"csv", "h5part"});
+}
+
+TEST_CASE("score: noh 1D round trip", "[score]") { require_round_trip("noh", {"n=100"}, {"csv", "swift"}); }
+
+TEST_CASE("score: heat 1D round trip (spatial_gauss)", "[score]") { require_round_trip("heat", {"n=16"}, {"csv"}); }
+
+TEST_CASE("score: gravity scores the code's accelerations against the direct sum", "[score]") {
+  const auto set = gravity::plummer_sphere(500, 3);
+  const auto tree = sph::build_tree<3>(set.x, set.m);
+  const auto f = sph::tree_gravity(tree, set.x, set.m, {.theta = 0.7, .eps = 0.01});
+  Snapshot s;
+  s.dim = 3;
+  for (int d = 0; d < 3; ++d)
+    for (std::size_t i = 0; i < set.x.size(); ++i) {
+      s.columns[std::string(1, "xyz"[d])].push_back(set.x[i][d]);
+      s.columns["a" + std::string(1, "xyz"[d])].push_back(f.a[i][d]);
+    }
+  s.columns["m"] = set.m;
+  s.columns["phi"] = f.phi;
+  for (const auto& [k, v] : s.columns) s.taken_from[k] = k;
+  const auto file = scratch("gravity.h5");
+  write_snapshot(s, file, "swift");
+  const Result r = score_snapshot(find_case("gravity"), {"eps=0.01"}, read_snapshot(file));
+  const auto d = gravity::direct(set.x, set.m, 0.01);
+  const auto p = gravity::percentiles(gravity::relative_force_error(f, d));
+  CHECK(r.errors.at("force_p99") == p.p99);
+  CHECK(r.errors.at("force_max") == p.max);
+  CHECK(r.errors.at("energy") > 0.0);
+  CHECK(r.errors.at("energy") < 1e-2);  // theta 0.7 quadrupole: SPH-EXA's bound at theta 0.5 is 1e-2
+}
+
+TEST_CASE("score: CSV reader takes blank-separated columns, comments and common spellings", "[score][snapshot]") {
+  const auto file = scratch("spellings.txt");
+  write_text(file, "# written by some code\n# Time: 0.125\n  Pos_X   Vel_X  Mass Density InternalEnergy Smoothing_Length ID\n"
+                   "0.1 1.0 0.01 1.0 2.5 0.04 7\n0.2 -1.0 0.01 1.1 2.4 0.04 8\n");
+  const Snapshot s = read_snapshot(file);
+  CHECK(s.size() == 2);
+  CHECK(s.dim == 1);
+  REQUIRE(s.time);
+  CHECK(*s.time == 0.125);
+  CHECK(s.taken_from.at("x") == "Pos_X");
+  CHECK(s.taken_from.at("vx") == "Vel_X");
+  CHECK(s.taken_from.at("rho") == "Density");
+  CHECK(s.taken_from.at("u") == "InternalEnergy");
+  CHECK(s.taken_from.at("h") == "Smoothing_Length");
+  CHECK(!s.has("p"));
+  CHECK(s.at("rho", "test")[1] == 1.1);
+  CHECK(s.describe().find("rho <- Density") != std::string::npos);
+}
+
+TEST_CASE("score: GADGET-style HDF5 (singular names, float32, no Dimension) is read", "[score][snapshot]") {
+  const auto file = scratch("gadget.hdf5");
+  const hid_t f = H5Fcreate(file.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+  const hid_t header = H5Gcreate2(f, "Header", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  const hsize_t one = 1;
+  const hid_t s1 = H5Screate_simple(1, &one, nullptr);
+  const double time = 0.5;
+  const hid_t a = H5Acreate2(header, "Time", H5T_IEEE_F64LE, s1, H5P_DEFAULT, H5P_DEFAULT);
+  H5Awrite(a, H5T_NATIVE_DOUBLE, &time);
+  const hid_t gas = H5Gcreate2(f, "PartType0", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  const float xyz[2][3] = {{0.f, 0.5f, 1.f}, {0.25f, 0.75f, 1.f}};
+  const float rho[2] = {1.f, 2.f}, m[2] = {0.5f, 0.5f};
+  const hsize_t d2[2] = {2, 3}, d1 = 2;
+  const hid_t s2 = H5Screate_simple(2, d2, nullptr), sn = H5Screate_simple(1, &d1, nullptr);
+  auto put = [&](const char* name, hid_t space, const float* data) {
+    const hid_t ds = H5Dcreate2(gas, name, H5T_IEEE_F32LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    H5Dwrite(ds, H5T_NATIVE_FLOAT, H5S_ALL, H5S_ALL, H5P_DEFAULT, data);
+    H5Dclose(ds);
+  };
+  put("Coordinates", s2, &xyz[0][0]);
+  put("Density", sn, rho);
+  put("Mass", sn, m);
+  H5Sclose(s1), H5Sclose(s2), H5Sclose(sn), H5Aclose(a), H5Gclose(gas), H5Gclose(header), H5Fclose(f);
+  const Snapshot s = read_snapshot(file);
+  CHECK(s.format == "swift");
+  CHECK(s.dim == 3);
+  CHECK(*s.time == 0.5);
+  CHECK(s.at("y", "test")[1] == 0.75);
+  CHECK(s.at("rho", "test")[1] == 2.0);
+  CHECK(s.taken_from.at("rho") == "/PartType0/Density");
+  CHECK(s.taken_from.at("m") == "/PartType0/Mass");
+}
+
+TEST_CASE("score: SPH-EXA's own H5Part file (fixture) is read and scored as a Sedov blast", "[score][snapshot]") {
+  const fs::path file = fs::path(SPHV_SOURCE_DIR) / "verification/tests/data/sphexa-sedov-n12.h5";
+  const Snapshot last = read_snapshot(file);
+  CHECK(last.format == "h5part");
+  CHECK(last.size() == 1728);
+  CHECK(last.dim == 3);
+  CHECK(*last.time == Approx(0.0301920).epsilon(1e-5));
+  CHECK(!last.has("u"));
+  const Snapshot first = read_snapshot(file, "h5part", 0);
+  CHECK(*first.time == Approx(0.0150705).epsilon(1e-5));
+  // SPH-EXA's blast: E = 1, rho0 = 1, gamma 5/3, centre at the origin; no u (from p).
+  const Result r = score_snapshot(find_case("sedov"), {}, last);
+  CHECK(r.params["dim"] == 3);
+  CHECK(r.params["n"] == 12);
+  CHECK(std::isfinite(r.errors.at("L1_rho")));
+  CHECK(std::isfinite(r.errors.at("shock_radius")));
+}
+
+TEST_CASE("score: bad snapshots are refused with one message naming the file", "[score][snapshot]") {
+  auto refused = [](const fs::path& file, const std::string& what, const std::string& format = "auto") {
+    INFO(file << ": expecting '" << what << "'");
+    try {
+      const Snapshot s = read_snapshot(file, format);
+      score_snapshot(find_case("sod"), {}, s);
+      FAIL("accepted");
+    } catch (const InputError& e) {
+      const std::string msg = e.what();
+      INFO(msg);
+      CHECK(msg.find(file.string()) != std::string::npos);
+      CHECK(msg.find(what) != std::string::npos);
+      CHECK(msg.find('\n') == std::string::npos);
+    }
+  };
+  const auto nan = scratch("nan.csv");
+  write_text(nan, "# time = 0.25\nx,vx,m,rho,u\n0.1,0,1,1,nan\n");
+  refused(nan, "not a finite number");
+  const auto missing = scratch("missing.csv");
+  write_text(missing, "# time = 0.25\nx,vx,m,u\n0.1,0,1,1\n");
+  refused(missing, "no column for 'rho'");
+  const auto notime = scratch("notime.csv");
+  write_text(notime, "x,vx,m,rho,u\n0.1,0,1,1,1\n");
+  refused(notime, "no time");
+  const auto empty = scratch("empty.csv");
+  write_text(empty, "# time = 0.25\nx,vx,m,rho,u\n");
+  refused(empty, "no particles");
+  const auto noheader = scratch("noheader.csv");
+  write_text(noheader, "0.1,0,1,1,1\n");
+  refused(noheader, "no header");
+  const auto notcsv = scratch("binary.dat");
+  write_text(notcsv, std::string("abc\0def", 7));
+  refused(notcsv, "binary");
+  refused(notcsv, "not a readable HDF5 file", "swift");
+  // A truncated HDF5 file: the first 1000 bytes of a good one.
+  Snapshot good;
+  good.dim = 1;
+  good.time = 0.25;
+  for (const char* k : {"x", "vx", "m", "rho", "u"}) good.columns[k] = std::vector<double>(200, 0.5), good.taken_from[k] = k;
+  const auto whole = scratch("whole.h5");
+  write_snapshot(good, whole, "swift");
+  std::ifstream in(whole, std::ios::binary);
+  std::string bytes(std::istreambuf_iterator<char>(in), {});
+  const auto truncated = scratch("truncated.h5");
+  write_text(truncated, bytes.substr(0, 1000));
+  refused(truncated, "HDF5");
+  // Wrong dimension: 2D particles scored as a 1D Noh problem.
+  const auto flat = scratch("plane.csv");
+  write_text(flat, "# time = 0.6\nx,y,vx,vy,m,rho,u\n0.1,0.1,0,0,1,1,1\n0.2,0.3,0,0,1,1,1\n");
+  try {
+    score_snapshot(find_case("noh"), {"dim=1"}, read_snapshot(flat));
+    FAIL("accepted");
+  } catch (const InputError& e) {
+    CHECK(std::string(e.what()).find("y varies") != std::string::npos);
+  }
+  // Header time and --set time disagree.
+  const auto timed = scratch("timed.csv");
+  write_text(timed, "# time = 0.25\nx,vx,m,rho,u\n0.1,0,1,1,1\n");
+  try {
+    score_snapshot(find_case("sod"), {"t_end=0.2"}, read_snapshot(timed));
+    FAIL("accepted");
+  } catch (const InputError& e) {
+    CHECK(std::string(e.what()).find("header says time 0.25") != std::string::npos);
+  }
+}
+
+TEST_CASE("ic: the shock tube's initial conditions are what sod starts from", "[score]") {
+  const Case& c = find_case("sod");
+  const auto file = scratch("ic.h5");
+  write_ic(c, c.parse({"n=50"}), file, "h5part");
+  const Snapshot s = read_snapshot(file);
+  CHECK(*s.time == 0.0);
+  const auto& x = s.at("x", "test");
+  const auto& rho = s.at("rho", "test");
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    INFO(x[i]);
+    CHECK(rho[i] == (x[i] < 0.5 ? 1.0 : 0.125));
+  }
+}
