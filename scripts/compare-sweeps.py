@@ -17,7 +17,7 @@ def load(root):
 
 def key(s):
     runs = [(r["params"], r["errors"], r["functionals"], r["verdict"]) for r in s["runs"]]
-    return runs, s["observed_order"], s["expected_order"], [c["pass"] for c in s["checks"]]
+    return runs, s["observed_order"], s["claims"], [c["pass"] for c in s["checks"]]
 
 
 a, b = load(sys.argv[1]), load(sys.argv[2])

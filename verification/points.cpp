@@ -12,6 +12,7 @@
 #include <thread>
 
 #include "build_info.hpp"
+#include "verification/build_id.hpp"
 #include "verification/mpi.hpp"
 
 extern char** environ;
@@ -21,13 +22,18 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-std::optional<Result> finished(const Point& pt, const Params& p) {
+// The point's result when one exists that this exact build produced with these parameters:
+// same executable bytes (SHA-256 of `exe`, the binary that runs the points) and build flags.
+// A commit alone does not say what ran: an uncommitted edit or another flag rebuilds the binary.
+std::optional<Result> finished(const Point& pt, const Params& p, const std::string& exe_sha256) {
   const auto file = pt.dir / "result.json";
   if (pt.dir.empty() || !std::filesystem::exists(file)) return std::nullopt;
   try {
     std::ifstream f(file);
     const auto j = nlohmann::json::parse(f);
-    if (j.at("params") != p.to_json() || j.at("provenance").at("git_commit") != build::git_commit)
+    const auto& prov = j.at("provenance");
+    if (j.at("params") != p.to_json() || prov.at("executable_sha256") != exe_sha256 ||
+        prov.at("cxx_flags") != build::cxx_flags)
       return std::nullopt;
     return result_from_json(j);
   } catch (const std::exception&) {
@@ -92,8 +98,10 @@ std::vector<Result> run_points(const Case& c, const std::vector<Point>& points, 
   }
   std::vector<std::optional<Result>> out(points.size());
   std::vector<std::size_t> todo;
+  const bool subprocesses = opt.jobs > 1 && !opt.exe.empty() && mpi::size() == 1;
+  const std::string exe_sha256 = subprocesses ? sha256_of_file(opt.exe) : executable_sha256();
   for (std::size_t k = 0; k < points.size(); ++k) {
-    if (!opt.force) out[k] = finished(points[k], params[k]);
+    if (!opt.force) out[k] = finished(points[k], params[k], exe_sha256);
     if (!out[k]) todo.push_back(k);
   }
   // Under mpirun each rank takes every size-th remaining point. Every rank must see the same
@@ -117,7 +125,7 @@ std::vector<Result> run_points(const Case& c, const std::vector<Point>& points, 
     ++done, ++fresh;
   };
 
-  if (opt.jobs > 1 && !opt.exe.empty() && ranks == 1) {
+  if (subprocesses) {
     const int threads = opt.threads_per_job > 0 ? opt.threads_per_job
                                                 : std::max(1u, std::thread::hardware_concurrency() / opt.jobs);
     std::map<pid_t, std::size_t> running;
@@ -134,7 +142,7 @@ std::vector<Result> run_points(const Case& c, const std::vector<Point>& points, 
       const std::size_t k = running.at(pid);
       running.erase(pid);
       std::optional<Result> r;
-      if (WIFEXITED(status) && WEXITSTATUS(status) == 0) r = finished(points[k], params[k]);
+      if (WIFEXITED(status) && WEXITSTATUS(status) == 0) r = finished(points[k], params[k], exe_sha256);
       if (!r) {
         r = crashed(c, params[k], WIFSIGNALED(status)
                                       ? "crashed: signal " + std::to_string(WTERMSIG(status))

@@ -135,11 +135,10 @@ std::vector<Check> gates(const Sweep& s) {
   return c;
 }
 
-// CPU time (one core, user, 2D): n = 16 ~3 s a variant (quick: 9 s for all three). Standard in
-// 2D: 16, 24, 32 (wall on the loaded machine 19 s, 26 s, 72 s; ~25 s CPU a variant, over the
-// 15-20 s budget: the catalogue is 36 pairings). 3D costs ~10x more per level (n = 12: 300 s
-// wall loaded), so its standard tier is the quick level only and full carries 12 and 16 (n = 16:
-// estimate ~10 min CPU, 2.4x the particles of 12 with more neighbours).
+// CPU time (one core, user): quick 9 s for all three variants; standard 33 s for all three
+// (2D 16, 24, 32: ~15 s a variant; the catalogue is 36 pairings). 3D costs ~10x more per level
+// (n = 12: 300 s wall loaded), so its standard tier is the quick level only and full carries 12
+// and 16 (n = 16: estimate ~10 min CPU, 2.4x the particles of 12 with more neighbours).
 const Levels levels = {.quick = {16}, .standard = {16, 24, 32}, .full = {16, 24, 32}};
 
 const Registration reg{Case{
