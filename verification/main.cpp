@@ -196,10 +196,26 @@ int baseline_update(const std::vector<std::string>& only, const RunOptions& opt)
   return 0;
 }
 
+// Prints "sphv: error: <what>" as one line: control characters from the user's input (a newline
+// inside a --set value, say) are shown escaped.
+void error_line(const std::string& what) {
+  std::string line;
+  for (unsigned char ch : what) {
+    if (ch >= 0x20 && ch != 0x7f) {
+      line += static_cast<char>(ch);
+    } else {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\x%02x", ch);
+      line += buf;
+    }
+  }
+  std::fprintf(stderr, "sphv: error: %s\n", line.c_str());
+}
+
 }  // namespace
 
 int run_main(int argc, char** argv) {
-  CLI::App app{"sphv: verification and convergence harness for a reference SPH implementation"};
+  CLI::App app{"sphv: verification and convergence harness for a reference SPH implementation", "sphv"};
   app.require_subcommand(1);
   int threads = 0;
   app.add_option("--threads", threads, "OpenMP threads (default: all cores)")->check(CLI::PositiveNumber);
@@ -222,10 +238,11 @@ int run_main(int argc, char** argv) {
   run->add_option("--out", out, "output directory (default runs/CASE)");
 
   std::vector<long> levels;
+  std::string levels_arg;  // parsed strictly by parse_levels ("" and "16,,32" are refused)
   std::string tier_name = "standard";
   auto* sweep = app.add_subcommand("sweep", "run a case at several resolutions (and variants): DIR/sweep.json");
   sweep->add_option("case", case_name, "case name")->required();
-  sweep->add_option("--levels", levels, "values of n, e.g. 16,32,64, run exactly as given (default: the tier's)")->delimiter(',');
+  auto* levels_opt = sweep->add_option("--levels", levels_arg, "values of n, e.g. 16,32,64, run exactly as given (default: the tier's)");
   sweep->add_option("--tier", tier_name, "quick | standard | full: the case's levels for that tier (default standard)");
   sweep->add_option("--set", settings, "parameter as key=value (repeatable)")->take_all();
   sweep->add_option("--vary", vary, "variants as key=a,b,c (repeatable: the product); DIR/<variant>/sweep.json")->take_all();
@@ -258,6 +275,10 @@ int run_main(int argc, char** argv) {
   add_bench_command(app);
 
   const bool root = mpi::rank() == 0;
+  if (argc <= 1) {  // a bare `sphv` asks what it can do: the help, exit 0
+    if (root) std::cout << app.help();
+    return 0;
+  }
   // One set of handlers for the parse (bench and gravity run inside it, as callbacks) and for
   // the commands after it: every error ends as one line and a non-zero exit.
   try {
@@ -280,6 +301,7 @@ int run_main(int argc, char** argv) {
     }
     if (*sweep) {
       const Case& c = find_case(case_name);
+      if (levels_opt->count() > 0) levels = parse_levels(levels_arg);
       if (!runner.empty()) {
         const Sweep s = runner_sweep(c, levels.empty() ? c.tier_levels(settings, tier) : levels, settings,
                                      out.empty() ? fs::path("runs") / (c.name + "-runner") : out, runner);
@@ -312,13 +334,13 @@ int run_main(int argc, char** argv) {
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    if (root) std::fprintf(stderr, "sphv: error: %s\n", e.what());
+    if (root) error_line(e.what());
     return 2;
   } catch (const InputError& e) {
-    if (root) std::fprintf(stderr, "sphv: error: %s\n", e.what());
+    if (root) error_line(e.what());
     return 2;
   } catch (const std::exception& e) {  // e.g. an output path that cannot be written
-    if (root) std::fprintf(stderr, "sphv: error: %s\n", e.what());
+    if (root) error_line(e.what());
     return 3;
   }
   return 0;

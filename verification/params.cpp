@@ -2,7 +2,6 @@
 
 #include <charconv>
 #include <cmath>
-#include <sstream>
 
 namespace sphv {
 
@@ -10,10 +9,14 @@ ParamSpec integer_param(std::string name, long def, std::string help, std::optio
   return {std::move(name), ParamSpec::Kind::Integer, std::to_string(def), std::move(help), gt};
 }
 
+std::string shortest(double v) {
+  char buf[32];  // the shortest round-trip form of a double needs at most 24 characters
+  const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v);
+  return ec == std::errc() ? std::string(buf, end) : "?";
+}
+
 ParamSpec real_param(std::string name, double def, std::string help, std::optional<double> gt) {
-  std::ostringstream s;
-  s << def;
-  return {std::move(name), ParamSpec::Kind::Real, s.str(), std::move(help), gt};
+  return {std::move(name), ParamSpec::Kind::Real, shortest(def), std::move(help), gt};
 }
 
 ParamSpec choice_param(std::string name, std::string def, std::string help,
@@ -79,15 +82,10 @@ void Params::set(const std::string& key, const std::string& value) {
     }
   }
   if (s.kind != ParamSpec::Kind::Text) {
-    std::ostringstream bound;
-    if (s.greater_than && !(number > *s.greater_than)) {
-      bound << *s.greater_than;
-      throw InputError("parameter " + key + " must be > " + bound.str() + ", got " + value);
-    }
-    if (s.at_least && !(number >= *s.at_least)) {
-      bound << *s.at_least;
-      throw InputError("parameter " + key + " must be >= " + bound.str() + ", got " + value);
-    }
+    if (s.greater_than && !(number > *s.greater_than))
+      throw InputError("parameter " + key + " must be > " + shortest(*s.greater_than) + ", got " + value);
+    if (s.at_least && !(number >= *s.at_least))
+      throw InputError("parameter " + key + " must be >= " + shortest(*s.at_least) + ", got " + value);
   }
   values_[key] = value;
 }
@@ -134,6 +132,23 @@ nlohmann::json Params::to_json() const {
     else j[s.name] = text(s.name);
   }
   return j;
+}
+
+std::vector<long> parse_levels(const std::string& text) {
+  if (text.empty()) throw InputError("--levels needs at least one value of n, e.g. 16,32,64");
+  std::vector<long> levels;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t comma = text.find(',', start);
+    const std::string item = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    long n = 0;
+    if (!parse_number(item, n))
+      throw InputError("--levels '" + text + "': '" + item + "' is not an integer (expected e.g. 16,32,64)");
+    if (n <= 0) throw InputError("--levels '" + text + "': n must be > 0, got " + item);
+    levels.push_back(n);
+    if (comma == std::string::npos) return levels;
+    start = comma + 1;
+  }
 }
 
 }  // namespace sphv

@@ -27,6 +27,9 @@ struct ParamSpec {
   std::vector<std::string> choices = {};              // allowed words for Text
 };
 
+// The shortest text that reads back as exactly v (std::to_chars): 5.0/3 is "1.6666666666666667".
+std::string shortest(double v);
+
 ParamSpec integer_param(std::string name, long def, std::string help, std::optional<double> gt = 0.0);
 ParamSpec real_param(std::string name, double def, std::string help, std::optional<double> gt = std::nullopt);
 ParamSpec choice_param(std::string name, std::string def, std::string help, std::vector<std::string> choices);
@@ -52,5 +55,9 @@ class Params {
   std::vector<ParamSpec> specs_;
   std::map<std::string, std::string> values_;
 };
+
+// A list of levels n as the user writes it after --levels: "16,32,64" (positive integers,
+// comma-separated). Anything else, the empty list included, is an InputError naming the fault.
+std::vector<long> parse_levels(const std::string& text);
 
 }  // namespace sphv

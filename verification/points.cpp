@@ -18,6 +18,7 @@
 
 #include "build_info.hpp"
 #include "verification/cost.hpp"
+#include "verification/build_id.hpp"
 #include "verification/mpi.hpp"
 
 extern char** environ;
@@ -29,13 +30,18 @@ using Clock = std::chrono::steady_clock;
 
 double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
-std::optional<Result> finished(const Point& pt, const Params& p) {
+// The point's result when one exists that this exact build produced with these parameters:
+// same executable bytes (SHA-256 of `exe`, the binary that runs the points) and build flags.
+// A commit alone does not say what ran: an uncommitted edit or another flag rebuilds the binary.
+std::optional<Result> finished(const Point& pt, const Params& p, const std::string& exe_sha256) {
   const auto file = pt.dir / "result.json";
   if (pt.dir.empty() || !std::filesystem::exists(file)) return std::nullopt;
   try {
     std::ifstream f(file);
     const auto j = nlohmann::json::parse(f);
-    if (j.at("params") != p.to_json() || j.at("provenance").at("git_commit") != build::git_commit)
+    const auto& prov = j.at("provenance");
+    if (j.at("params") != p.to_json() || prov.at("executable_sha256") != exe_sha256 ||
+        prov.at("cxx_flags") != build::cxx_flags)
       return std::nullopt;
     return result_from_json(j);
   } catch (const std::exception&) {
@@ -134,8 +140,10 @@ std::vector<Result> run_points(const std::vector<Task>& tasks, const RunOptions&
   }
   std::vector<std::optional<Result>> out(tasks.size());
   std::vector<std::size_t> todo;
+  const bool subprocesses = (opt.jobs > 1 || opt.isolate) && !opt.exe.empty() && mpi::size() == 1;
+  const std::string exe_sha256 = subprocesses ? sha256_of_file(opt.exe) : executable_sha256();
   for (std::size_t k = 0; k < tasks.size(); ++k) {
-    if (!opt.force) out[k] = finished(tasks[k].pt, params[k]);
+    if (!opt.force) out[k] = finished(tasks[k].pt, params[k], exe_sha256);
     if (out[k] && harness_verdict(out[k]->verdict)) out[k].reset();  // a crash or timeout is run again
     if (!out[k]) todo.push_back(k);
   }
@@ -168,7 +176,7 @@ std::vector<Result> run_points(const std::vector<Task>& tasks, const RunOptions&
     out[k] = std::move(r);
   };
 
-  if ((opt.jobs > 1 || opt.isolate) && !opt.exe.empty() && ranks == 1) {
+  if (subprocesses) {
     // Threads: a point costing more than half a core's fair share of the whole gets every core
     // (it would otherwise finish last, alone); the others share the cores one thread each.
     auto threads_of = [&](std::size_t k) {
@@ -210,7 +218,7 @@ std::vector<Result> run_points(const std::vector<Task>& tasks, const RunOptions&
       const double wall = since(r.start);
       // `sphv run` exits 1 after writing a result whose verdict the case does not expect.
       std::optional<Result> res;
-      if (!r.killed && WIFEXITED(status) && WEXITSTATUS(status) <= 1) res = finished(tasks[k].pt, params[k]);
+      if (!r.killed && WIFEXITED(status) && WEXITSTATUS(status) <= 1) res = finished(tasks[k].pt, params[k], exe_sha256);
       if (res) {
         if (opt.on_run) opt.on_run(*res);
         progress.done(k, res->wall_time_s);

@@ -3,6 +3,7 @@
 #include <omp.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <ctime>
@@ -12,6 +13,7 @@
 #include <thread>
 
 #include "build_info.hpp"
+#include "verification/build_id.hpp"
 
 namespace sphv {
 
@@ -22,6 +24,15 @@ std::string cpu_model() {
     if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
   return "unknown";
 }
+
+// Whether the sources the binary was built from held uncommitted changes, and which.
+nlohmann::json source_tree() {
+  nlohmann::json changes = nlohmann::json::array();
+  std::istringstream lines(build::tree_changes);
+  for (std::string line; std::getline(lines, line);)
+    if (!line.empty()) changes.push_back(line);
+  return {{"dirty", build::tree_dirty}, {"changes", changes}};
+}
 }  // namespace
 
 nlohmann::json provenance() {
@@ -30,14 +41,16 @@ nlohmann::json provenance() {
   const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
   char date[32];
   std::strftime(date, sizeof date, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
-  return {{"git_commit", build::git_commit}, {"compiler", build::compiler},
+  return {{"git_commit", build::git_commit}, {"source_tree", source_tree()},
+          {"executable_sha256", executable_sha256()}, {"compiler", build::compiler},
           {"cxx_flags", build::cxx_flags},   {"build_type", build::build_type},
           {"threads", omp_get_max_threads()}, {"date", date},
           {"host", host}, {"cpu", cpu_model()}, {"cores", std::thread::hardware_concurrency()}};
 }
 
 namespace {
-// JSON has no NaN or infinity: non-finite numbers are written as null and named in the verdict.
+// Figures may hold gaps: a non-finite point is drawn as a gap (null). Nothing else is written
+// non-finite: see name_non_finite.
 nlohmann::json number(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); }
 nlohmann::json numbers(const std::vector<double>& v) {
   nlohmann::json a = nlohmann::json::array();
@@ -54,10 +67,66 @@ nlohmann::json to_json(const Figure& f) {
           {"xscale", f.xscale}, {"yscale", f.yscale}, {"series", s}};
 }
 
+namespace {
+std::string text(double v) { return std::isnan(v) ? "nan" : v > 0 ? "inf" : "-inf"; }
+
+// Every non-finite number inside j, as "where=value"; with fix, each is replaced by null.
+void non_finite_in(nlohmann::json& j, const std::string& where, std::vector<std::string>& found, bool fix) {
+  if (j.is_number_float() && !std::isfinite(j.get<double>())) {
+    found.push_back(where + "=" + text(j.get<double>()));
+    if (fix) j = nullptr;
+  } else if (j.is_object()) {
+    for (auto& [k, v] : j.items()) non_finite_in(v, where + "." + k, found, fix);
+  } else if (j.is_array()) {
+    for (std::size_t i = 0; i < j.size(); ++i) non_finite_in(j[i], where + "[" + std::to_string(i) + "]", found, fix);
+  }
+}
+
+// The non-finite numbers among a result's errors, functionals, extra and particles; with fix,
+// they are removed (errors, functionals), nulled (extra) or the particle table dropped.
+std::vector<std::string> non_finite(Result& r, bool fix) {
+  std::vector<std::string> found;
+  for (auto* m : {&r.errors, &r.functionals}) {
+    const std::string part = m == &r.errors ? "errors." : "functionals.";
+    for (auto it = m->begin(); it != m->end();) {
+      if (std::isfinite(it->second)) {
+        ++it;
+        continue;
+      }
+      found.push_back(part + it->first + "=" + text(it->second));
+      it = fix ? m->erase(it) : std::next(it);
+    }
+  }
+  non_finite_in(r.extra, "extra", found, fix);
+  bool bad_particles = false;
+  for (std::size_t c = 0; c < r.particles.columns.size(); ++c) {
+    const auto& col = r.particles.columns[c];
+    const auto bad = std::find_if(col.begin(), col.end(), [](double v) { return !std::isfinite(v); });
+    if (bad == col.end()) continue;
+    found.push_back("particles." + r.particles.names[c] + "[" + std::to_string(bad - col.begin()) + "]=" + text(*bad));
+    bad_particles = true;
+  }
+  if (fix && bad_particles) r.particles = {};
+  return found;
+}
+}  // namespace
+
+void name_non_finite(Result& r) {
+  const auto found = non_finite(r, true);
+  if (found.empty()) return;
+  std::string list;
+  for (std::size_t i = 0; i < found.size() && i < 5; ++i) list += (i ? ", " : "") + found[i];
+  if (found.size() > 5) list += " and " + std::to_string(found.size() - 5) + " more";
+  r.verdict = (r.verdict == "ok" ? "" : r.verdict + "; ") + "non-finite " + list + " (not written)";
+}
+
 nlohmann::json to_json(const Result& r) {
+  Result copy = r;  // only when the check fails is the copy's list used
+  if (const auto found = non_finite(copy, false); !found.empty())
+    throw std::logic_error("refusing to write a non-finite number: " + found.front() + " (" + r.case_name + ")");
   nlohmann::json errors = nlohmann::json::object(), functionals = nlohmann::json::object();
-  for (const auto& [k, v] : r.errors) errors[k] = number(v);
-  for (const auto& [k, v] : r.functionals) functionals[k] = number(v);
+  for (const auto& [k, v] : r.errors) errors[k] = v;
+  for (const auto& [k, v] : r.functionals) functionals[k] = v;
   nlohmann::json figures = nlohmann::json::array();
   for (const auto& f : r.figures) figures.push_back(to_json(f));
   return {{"case", r.case_name},       {"params", r.params},   {"n_particles", r.n_particles},
@@ -74,7 +143,8 @@ std::vector<double> doubles(const nlohmann::json& a) {
 }
 std::map<std::string, double> named(const nlohmann::json& o) {
   std::map<std::string, double> m;
-  for (const auto& [k, v] : o.items()) m[k] = v.is_number() ? v.get<double>() : std::nan("");
+  for (const auto& [k, v] : o.items())
+    if (v.is_number()) m[k] = v.get<double>();  // an older file's null (non-finite) is left out
   return m;
 }
 }  // namespace

@@ -48,6 +48,12 @@ struct Result {
 
 nlohmann::json provenance();
 nlohmann::json to_json(const Figure& f);
+// No result file holds NaN or infinity. name_non_finite (run_case calls it) removes every
+// non-finite error or functional, nulls non-finite numbers in extra, drops a particle table
+// holding one, and names each in the verdict ("non-finite errors.L1_rho=nan ..."), appended to
+// a verdict that was not "ok". to_json of a result that still holds one throws (a figure's
+// non-finite points are written as null: gaps in a line).
+void name_non_finite(Result& r);
 nlohmann::json to_json(const Result& r);
 // Reads a result back (resumed sweeps, subprocess and MPI points); particles are not read.
 Result result_from_json(const nlohmann::json& j);

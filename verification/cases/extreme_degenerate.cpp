@@ -114,6 +114,19 @@ std::vector<Check> gates(const Sweep& s) {
       c.push_back({level + "_at_rest", r.errors.at("speed"), 0.0, 0.0, "no neighbour, no force", Check::Kind::verification,
                    "speed"});
     }
+    if (kind == "contrast" && r.verdict == "stable" && s.levels[k] == 16) {  // the measured level
+      // Summation density (27) smooths the mass across the contact, so next to it the light gas
+      // gets a density of the order of the dense one's and, with its u, a pressure of the order of
+      // the contrast: the known SPH contact error (Agertz et al. 2007; Saitoh & Makino 2013), not
+      // a bug. Measured at n = 16, contrast 1e3, t = 0.005: max |p - 1| = 60.5, max |v| / c =
+      // 13.6. Gated between half and 1.2x the measured values: a method that removes the blip
+      // (e.g. pressure-energy SPH) must move the claim on purpose.
+      for (const auto& [name, measured] : {std::pair{"pressure_blip", 60.47}, std::pair{"speed_over_c_dense", 13.64}})
+        c.push_back({level + "_" + name, r.errors.at(name), 0.5 * measured, 1.2 * measured,
+                     std::string("SPH contact error at contrast 1e3: between half and 1.2x the measured ") +
+                         std::to_string(measured),
+                     Check::Kind::verification, name});
+    }
   }
   return c;
 }
@@ -134,8 +147,10 @@ const Registration reg{Case{
     .levels = {.quick = {16}, .standard = {16, 32}, .full = {16, 32}},
     .orders = [](const Params&) {
       const std::string why = "a degenerate input has a verdict and exact values, not a convergence rate";
+      const std::string contact = "the SPH contact error is set by the density contrast at the contact, not by "
+                                  "the resolution: gated between a floor and a bound at one level";
       return OrderClaims{{"self_density", no_order(why)}, {"speed", no_order(why)},
-                         {"speed_over_c_dense", no_order(why)}, {"pressure_blip", no_order(why)}};
+                         {"speed_over_c_dense", no_order(contact)}, {"pressure_blip", no_order(contact)}};
     },
     .error_defs = {{"self_density", "isolated particle: |rho - m W(0, h_max)| / (m W(0, h_max)), (49)"},
                    {"speed", "isolated particle: max |v| at t_end (exact 0: no neighbour, no force)"},

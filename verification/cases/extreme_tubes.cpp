@@ -68,9 +68,11 @@ std::vector<Check> gates(const Sweep& s) {
     const std::string level = "n" + std::to_string(s.levels[k]);
     c.push_back({level + "_stable", double(r.verdict == "stable"), 1.0, 1.0, "runs to t_end with a finite, positive state"});
     if (r.verdict != "stable") continue;
-    // Measured L1(rho) at n = 200: toro2 0.0067, toro3 (energy 38) 0.0177; tolerances 2x.
-    const double tol = preset == "toro2" ? 0.015 : 0.035;
-    c.push_back({level + "_L1_rho", r.errors.at("L1_rho"), 0.0, tol, "L1(rho) against the exact Riemann solution (measured, margin 2)",
+    // Measured L1(rho) at n = 200, 400, 800 (one thread): toro2 0.00667, 0.00419, 0.00255; toro3
+    // (energy 38) 0.0177, 0.0252, 0.0199. Bound at every level: the largest measured + 20 %.
+    const double tol = 1.2 * (preset == "toro2" ? 0.00667 : 0.0252);
+    c.push_back({level + "_L1_rho", r.errors.at("L1_rho"), 0.0, tol,
+                 "L1(rho) against the exact Riemann solution (largest measured on 200..800 + 20 %)",
                  Check::Kind::verification, "L1_rho"});
   }
   return c;
@@ -88,8 +90,15 @@ const Registration reg{Case{
                real_param("C", 0.3, "Courant number", 0.0),
                integer_param("max_steps", 200000, "step budget (ends with a verdict)")},
     .levels = {.quick = {200}, .standard = {200, 400, 800}, .full = {200, 400, 800}},
-    .orders = [](const Params&) {
-      return OrderClaims{{"L1_rho", {1.0, 0.5, "discontinuities limit L1 convergence to first order"}}};
+    // toro2: local orders 0.67, 0.72 on 200..800 (fit 0.69), band 0.5 around 1 (pre-asymptotic, as
+    // sod). toro3: non-monotone on 200..800 (the blast's dense shell, ~0.02 wide at t_end, holds a
+    // handful of particles at n = 200): no order, bounded.
+    .orders = [](const Params& p) {
+      if (p.text("preset") == "toro3")
+        return OrderClaims{{"L1_rho", no_order("the blast wave's dense shell is a few particles wide at these n: L1 "
+                                               "0.0177, 0.0252, 0.0199 at n = 200, 400, 800 (non-monotone); bounded")}};
+      return OrderClaims{{"L1_rho", {1.0, 0.5, "discontinuities limit L1 convergence to first order; measured 0.69 "
+                                              "on 200..800 (pre-asymptotic)"}}};
     },
     .error_defs = {{"L1_rho", "sum_i (m_i/rho_i) |rho_i - rho_exact(x_i)| / sum_i m_i/rho_i over the tube at t_end "
                               "(exact Riemann solution)"}},

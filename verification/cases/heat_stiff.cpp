@@ -194,6 +194,7 @@ const Registration reg{Case{
     },
     .error_defs = {{"time_euler_at_bound", "rms over particles of |u_Euler - u_ref| / amplitude at t_end, forward Euler at "
                                            "0.95 of its stability bound, u_ref from CVODE at rtol 1e-12"}},
+    .validate = validate,
     .run = run,
     .gates = gates,
 }};

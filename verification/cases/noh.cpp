@@ -3,6 +3,7 @@
 // 1/3 with density 4^d behind it and the gas at rest. Independent reference: reference/noh (the
 // exact solution). Wall heating (Noh 1987): every method overheats and underdensifies the gas
 // at the centre; it is measured, not gated, and the density gate looks away from it.
+#include <algorithm>
 #include <cmath>
 
 #include "reference/noh.hpp"
@@ -107,7 +108,14 @@ std::vector<Check> gates(const Sweep& s) {
     c.push_back({level + "_swept_mass", r.errors.at("swept_mass"), 0.0, tol_swept,
                  "mass brought to rest vs rho0 vol(4 t / 3) (measured, margin >= 1.3)", Check::Kind::verification,
                  "swept_mass"});
-    if (d == 3) return;  // at 3D gate sizes there is no post-shock plateau (peak 12 against 64 at n=10)
+    // 3D at n = 10: no post-shock plateau and no front (binned peak ~12 against 64; the run reports
+    // neither error, and the swept mass above is the gated measure of the shock). 1D/2D: the front
+    // must be found.
+    if (d == 3) return;
+    c.push_back({level + "_shock_front_found", r.extra.value("shock_front_found", false) ? 1.0 : 0.0, 1.0, 1.0,
+                 "the binned density rises through the midpoint of the post- and pre-shock values",
+                 Check::Kind::verification, "shock_speed"});
+    if (!r.errors.count("rho_post")) return;
     // Measured post-shock density errors at the gate level: 1D n=200 1.3% (also 1.3% at n=400: the
     // deficit is the entropy excess of the start-up collision, not resolution), 2D n=50 7.7%;
     // tolerances about twice that.
@@ -121,6 +129,27 @@ std::vector<Check> gates(const Sweep& s) {
   });
 }
 
+// Measured in 1D (one thread): n = 200, 400: rho_post 0.01321, 0.01329; shock_speed 0.0419,
+// 0.0407; swept_mass 0.006249, 0.006249. None converges: wall heating (Noh 1987) leaves the centre
+// hot and underdense whatever the resolution (the start-up collision's entropy excess), so the
+// plateau sits 1.3 % low and the front 4 % ahead, in every method without an explicit heat
+// conduction term. The errors are floors, bounded at every level (gates above).
+OrderClaims noh_orders(const Params& p) {
+  const std::string floor = "wall heating (Noh 1987): the start-up collision's entropy excess at the centre does not "
+                            "shrink with resolution; measured 1D n = 200, 400: rho_post 1.32 %, 1.33 %, shock_speed "
+                            "4.2 %, 4.1 %, swept_mass 0.62 %, 0.62 %: floors, bounded at every level";
+  if (p.integer("dim") == 3)
+    return {{"swept_mass", no_order("3D pre-asymptotic: at n = 10 the shock radius is 0.8 initial h, no post-shock "
+                                    "plateau or front exists (rho_post, shock_speed are not reported); the swept mass "
+                                    "is bounded")},
+            {"rho_post", no_order(floor)}, {"shock_speed", no_order(floor)}};
+  return {{"rho_post", no_order(floor)}, {"shock_speed", no_order(floor)}, {"swept_mass", no_order(floor)}};
+}
+
+// Cost (CPU, one thread): 1D n = 400 2 s; 2D n = 50 ~10 s; 3D n = 10 ~25 s (5k particles). 3D
+// claims no order, so its standard tier stays at the quick level; full adds n = 14, 20 (~3, ~15
+// min, estimated ~n^4; n = 28 would need max_particles above 8e4). Full in 1D/2D is the standard
+// tier: the errors are floors, and 2D n = 141 would pass the 5e4 particle cap.
 const Levels levels = {.quick = {200}, .standard = {200, 400, 800}, .full = {200, 400, 800}};
 
 const Registration reg{Case{
@@ -139,19 +168,16 @@ const Registration reg{Case{
       return ps;
     }(),
     .levels = levels,
-    .orders = [](const Params&) {
-      const OrderClaim first{1.0, 0.5, "shock-limited: first order in h at fixed hfact"};
-      return OrderClaims{{"rho_post", first}, {"shock_speed", first}, {"swept_mass", first}};
-    },
+    .orders = noh_orders,
     .error_defs = noh::error_defs,
     .variants = {{}, {"dim=2"}, {"dim=3"}},
     .levels_for = [](const Params& p) {
-      // 1D 200, 400, 800; 2D 50, 71, 100; 3D 10, 14, 20 (a 3D run at n = 10 has ~5k particles,
-      // ~40 s on one loaded core).
+      // 1D 200, 400, 800; 2D 50, 71, 100; 3D 10 (full 10, 14, 20).
       const long d = p.integer("dim");
+      if (d == 3) return Levels{.quick = {10}, .standard = {10}, .full = {10, 14, 20}};
       Levels l = levels;
       for (auto* v : {&l.quick, &l.standard, &l.full})
-        for (auto& n : *v) n = d == 1 ? n : static_cast<long>(std::lround((d == 2 ? 50.0 : 10.0) * std::sqrt(n / 200.0)));
+        for (auto& n : *v) n = d == 1 ? n : static_cast<long>(std::lround(50.0 * std::sqrt(n / 200.0)));
       return l;
     },
     .validate = validate,

@@ -86,6 +86,17 @@ void validate(const Params& p) {
                      " holds no particle: raise r_blast or n");
 }
 
+// Measured L1_rho at the finest quick level of each catalogue variant (2D n = 32, 3D n = 16; one
+// thread, the drift baseline's values): default 0.2772, dim=3 0.3059, gamma=1.4 0.3966,
+// energy=41 0.2829. The bound at a sweep's finest level is that + 20 % (2D: the error falls with n,
+// 0.277, 0.203, 0.112 at n = 32, 64, 128, so it holds on the standard levels; 3D: 0.306, 0.341 at
+// n = 16, 24, it does not fall yet, and the bound is gated at the quick level only).
+double l1_measured(const Params& p) {
+  if (p.integer("dim") == 3) return 0.3059;
+  if (p.real("gamma") == 1.4) return 0.3966;
+  return p.text("energy") == "41" ? 0.2829 : 0.2772;
+}
+
 std::vector<Check> gates(const Sweep& s) {
   std::vector<Check> c = radial::per_level(s, [](const std::string& level, const Result& r, std::vector<Check>& c) {
     // Measured |R_front - R| / R: 2D 1.9%, 1.9%, 0.4% (n = 32, 64, 128); 3D 9.2% (n=16, blast on
@@ -95,23 +106,43 @@ std::vector<Check> gates(const Sweep& s) {
                  "R_front within tol of xi_0 (E t^2/rho)^(1/(d+2)) (measured, margin >= 1.3)", Check::Kind::verification,
                  "shock_radius"});
   });
-  // Density L1 order in 2D (needs two levels: `sphv sweep`, and the convergence test). Theory: 1
-  // once the shock's smearing over ~h dominates. Measured (gamma 5/3, (38)): L1 0.277, 0.203,
-  // 0.112 at n = 32, 64, 128, order 0.45 then 0.86 (n = 32: the blast's R/4 is 2.4 spacings);
-  // with the blast on the initial kernel it was 0.277, 0.279, 0.253 (order -0.01, 0.14).
-  // gamma 1.4: 0.397, 0.330, 0.213 (0.27, 0.63); (41): 0.283, 0.202, 0.109 (0.49, 0.88).
-  // Bound 0.25: the lowest pre-asymptotic pair measured (gamma 1.4, 0.27), small margin.
-  // 3D (n = 16, 24: 0.306, 0.341) is pre-asymptotic, the blast on 8 and 32 particles: not gated.
-  const auto order = s.observed_order.find("L1_rho");
-  const bool all_stable = std::all_of(s.runs.begin(), s.runs.end(), [](const Result& r) { return r.verdict == "stable"; });
-  if (find_case(s.case_name).parse(s.settings).integer("dim") == 2 && s.runs.size() >= 2 && all_stable &&
-      order != s.observed_order.end())
-    c.push_back({"L1_rho_order", order->second.p, 0.25, 3.0,
-                 "density L1 converges: observed order >= 0.25 (theory 1; measured 0.27-0.88, pre-asymptotic)"});
+  // 2D: the finest level; 3D: the quick level n = 16 (the error does not fall yet, see above).
+  const Params p = find_case(s.case_name).parse(s.settings);
+  const bool d3 = p.integer("dim") == 3;
+  for (std::size_t k = 0; k < s.runs.size(); ++k) {
+    const bool gated = d3 ? s.levels[k] == 16 : k + 1 == s.runs.size();
+    if (!gated || !s.runs[k].errors.count("L1_rho")) continue;
+    const double m = l1_measured(p);
+    c.push_back({"n" + std::to_string(s.levels[k]) + "_L1_rho", s.runs[k].errors.at("L1_rho"), 0.0, 1.2 * m,
+                 "measured " + std::to_string(m) + " at the quick level + 20 %", Check::Kind::verification, "L1_rho"});
+  }
   return c;
 }
 
-const Levels levels = {.quick = {32}, .standard = {32, 64, 128}, .full = {32, 64, 128}};
+// 2D, density L1 (theory 1 once the shock's smearing over ~h dominates). Measured at n = 32, 64,
+// 128: gamma 5/3 with (38) 0.277, 0.203, 0.112 (local orders 0.45, 0.86; fit 0.65); gamma 1.4
+// 0.397, 0.330, 0.213 (0.27, 0.63; fit 0.45); (41) 0.283, 0.202, 0.109 (0.49, 0.88; fit 0.69).
+// With the blast on the initial kernel it was 0.277, 0.279, 0.253 (orders -0.01, 0.14): a band
+// that admits that must not be. Band 0.6 around 1 (pre-asymptotic: the local order rises towards
+// 1; n = 32 holds the blast's R/4 on 2.4 spacings), plus 2 se of the fit. The shock radius error
+// is a few % and not monotone in n (1.9, 1.9, 0.4 %): bounded, no order claimed.
+// 3D at n = 16, 24 (0.306, 0.341): pre-asymptotic, the blast on 8 and 32 particles: no order.
+OrderClaims sedov_orders(const Params& p) {
+  const OrderClaim radius = no_order("the front position error is a few per cent and not monotone on the affordable "
+                                     "levels (2D 1.9, 1.9, 0.4 % at n = 32, 64, 128): bounded at every level");
+  if (p.integer("dim") == 3)
+    return {{"shock_radius", radius},
+            {"L1_rho", no_order("3D pre-asymptotic: L1 0.306, 0.341 at n = 16, 24 (the blast on 8 and 32 particles); "
+                                "bounded at the quick level, the full tier (n up to 48) looks for the order")}};
+  return {{"shock_radius", radius},
+          {"L1_rho", {1.0, 0.6, "a shock smeared over a few h: L1 first order in h at fixed hfact; pre-asymptotic "
+                                "on 32..128 (measured fits 0.45-0.69, local orders rising towards 1)"}}};
+}
+
+// Cost (wall, one thread, loaded machine): 2D n = 32 ~4 s, 64 ~8 s, 128 ~60 s (steps ~ n, particles
+// ~ n^2); 256 ~ 8 min (estimated). Quick: one level (the L1 bound and the front); standard: the
+// order on three levels; full adds 256.
+const Levels levels = {.quick = {32}, .standard = {32, 64, 128}, .full = {32, 64, 128, 256}};
 
 const Registration reg{Case{
     .name = "sedov",
@@ -132,14 +163,14 @@ const Registration reg{Case{
       return ps;
     }(),
     .levels = levels,
-    .orders = [](const Params&) {
-      const OrderClaim first{1.0, 0.5, "a shock smeared over a few h: errors first order in h at fixed hfact"};
-      return OrderClaims{{"shock_radius", first}, {"L1_rho", first}};
-    },
+    .orders = sedov_orders,
     .error_defs = sedov::error_defs,
     .variants = {{}, {"dim=3"}, {"gamma=1.4"}, {"energy=41"}},
     .levels_for = [](const Params& p) {
-      if (p.integer("dim") == 3) return Levels{.quick = {16}, .standard = {16, 24, 32}, .full = {16, 24, 32}};
+      // 3D: n = 16 ~25 s (4096 particles), 24 ~2 min, 32 ~6 min, 48 ~40 min (estimated ~n^4). No
+      // order is claimed (pre-asymptotic), so standard stays at the quick level and full carries
+      // the resolutions that may show one.
+      if (p.integer("dim") == 3) return Levels{.quick = {16}, .standard = {16}, .full = {16, 24, 32, 48}};
       return levels;
     },
     .validate = validate,

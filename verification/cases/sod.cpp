@@ -1,6 +1,7 @@
 // Cases `sod`, `sod2d`, `sod3d`: Sod's shock tube and Toro's Riemann problems 1-5 (or any
 // left/right state) with the hydrodynamics of 9.2-9.4.2, against the exact Riemann solver
 // (reference/riemann, Toro ch. 4). Errors are L1 over the tube [0, 1] at t_end.
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <map>
@@ -167,10 +168,48 @@ std::vector<ParamSpec> params(long n_default, double hfact_default) {
   return ps;
 }
 
-// Checks shared by the three cases. `l1_max`: bound on L1(rho) at the finest gate level.
-// Momentum and energy of the tube are not gated here: the boundary layers push on the tube ends
-// (impulse (p_l - p_r) t); conservation is gated on an isolated periodic gas in tests/hydro.cpp.
-std::vector<Check> tube_gates(const Sweep& s, double l1_max, const std::string& l1_why, bool gate_order) {
+// A variant's name as the catalogue lists it: the settings other than n, joined ("default").
+std::string variant_key(const Params& p) {
+  std::string k;
+  for (const auto& kv : p.non_defaults())
+    if (kv.rfind("n=", 0) != 0) k += (k.empty() ? "" : ",") + kv;
+  return k.empty() ? "default" : k;
+}
+
+// Measured errors {L1_rho, L1_v, L1_p, L1_u} at the finest quick level of every variant the
+// catalogue runs (1D n = 800, 2D n = 100, 3D n = 16; one thread, this code, 2026-11-30). The
+// bound on each error at the finest level of a sweep is the measured value + 20 % (errors fall
+// with n, so it holds on the standard levels too); a method change of the size the variants
+// show (visc_h=full against half: +45 % in L1_rho) breaks it. Continuity (29) does not converge:
+// it is gated to stay above half its measured value (a floor) and below the same + 20 %.
+using Errors4 = std::array<double, 4>;
+const char* const error_names[] = {"L1_rho", "L1_v", "L1_p", "L1_u"};
+const std::map<std::string, Errors4> measured_1d = {
+    {"default", {4.016e-3, 1.721e-2, 4.943e-3, 2.267e-2}},
+    {"density=continuity33", {4.547e-3, 1.704e-2, 6.385e-3, 2.254e-2}},
+    {"density=continuity29", {1.046e-1, 1.208e-1, 1.084e-1, 1.338e-1}},
+    {"euler=26", {3.988e-3, 1.682e-2, 4.804e-3, 2.216e-2}},
+    {"euler=25", {3.862e-3, 1.651e-2, 4.713e-3, 2.190e-2}},
+    {"euler=22", {6.439e-3, 1.793e-2, 6.345e-3, 3.729e-2}},
+    {"energy=38", {4.067e-3, 1.690e-2, 4.767e-3, 2.193e-2}},
+    {"integrator=chapter", {4.009e-3, 1.720e-2, 4.934e-3, 2.266e-2}},
+    {"visc_h=full", {5.808e-3, 2.907e-2, 7.025e-3, 3.435e-2}},
+};
+const std::map<std::string, Errors4> measured_2d = {{"default", {1.909e-2, 4.892e-2, 2.057e-2, 5.120e-2}}};
+const std::map<std::string, Errors4> measured_3d = {{"default", {4.819e-2, 1.230e-1, 6.655e-2, 1.707e-1}}};
+constexpr double bound_margin = 1.2, floor_fraction = 0.5;
+
+const Errors4* measured(const Params& p, int dim) {
+  const auto& table = dim == 1 ? measured_1d : dim == 2 ? measured_2d : measured_3d;
+  const auto it = table.find(variant_key(p));
+  return it == table.end() ? nullptr : &it->second;
+}
+
+// Per level: stable, or (timestep=chapter) unstable as predicted. Then a bound on each error at
+// the finest level (a floor as well for (29)). Momentum and energy of the tube are not gated
+// here: the boundary layers push on the tube ends (impulse (p_l - p_r) t); conservation is gated
+// on an isolated periodic gas in tests/hydro.cpp.
+std::vector<Check> tube_gates(const Sweep& s, int dim) {
   std::vector<Check> c;
   const Params p = find_case(s.case_name).parse(s.settings);
   const bool chapter_dt = p.text("timestep") == "chapter";
@@ -185,15 +224,24 @@ std::vector<Check> tube_gates(const Sweep& s, double l1_max, const std::string& 
       c.push_back({level + "_unstable", double(!stable), 1.0, 1.0, "(43) from rest: dt = eta^2 >> Courant limit"});
     }
   }
-  if (!s.settings.empty()) return c;
+  const Errors4* m = measured(p, dim);
+  if (!m || s.runs.empty()) return c;
+  const bool floor = p.text("density") == "continuity29";
   const auto& fine = s.runs.back();
-  if (fine.errors.count("L1_rho"))
-    c.push_back({"L1_rho", fine.errors.at("L1_rho"), 0.0, l1_max, l1_why, Check::Kind::verification, "L1_rho"});
-  if (!gate_order && fine.errors.count("L1_rho") && s.runs.front().errors.count("L1_rho"))
-    // 2D/3D lattices: measured orders 0.3-0.6 on the few affordable levels (pre-asymptotic,
-    // transverse lattice noise); gate only that the error falls with resolution.
+  for (int e = 0; e < 4; ++e) {
+    const std::string name = error_names[e];
+    if (!fine.errors.count(name)) continue;
+    const double v = (*m)[e];
+    c.push_back({name, fine.errors.at(name), floor ? floor_fraction * v : 0.0, bound_margin * v,
+                 floor ? "(29) does not converge: between half and 1.2x the measured " + std::to_string(v)
+                       : "finest level: measured " + std::to_string(v) + " at the finest quick level + 20 %",
+                 Check::Kind::verification, name});
+  }
+  if (dim > 1 && fine.errors.count("L1_rho") && s.runs.front().errors.count("L1_rho"))
+    // 2D/3D: the error must fall with resolution (measured finest / coarsest quick level: 0.64 in
+    // 2D, 0.83 in 3D).
     c.push_back({"L1_rho_falls", fine.errors.at("L1_rho") / s.runs.front().errors.at("L1_rho"), 0.0, 0.9,
-                 "finest / coarsest gate level: must fall with resolution (measured 0.64 in 2D, 0.83 in 3D)",
+                 "finest / coarsest level: must fall with resolution (measured 0.64 in 2D, 0.83 in 3D)",
                  Check::Kind::verification, "L1_rho"});
   return c;
 }
@@ -203,20 +251,27 @@ const char* const why_first_order =
     "contribution is O(1/n); the smooth rarefaction converges faster but the discontinuities limit the "
     "total to first order (grid codes: the same, Athena++ gates ratio <= 0.6 per doubling)";
 
-// 1D: measured 0.72-0.88 on the quick levels 200..800 (0.75-0.88 on 100..1600; the local slope
-// of L1_v and L1_u rises from 0.4 to 1.0 across 100..1600: pre-asymptotic start-up error at the
-// contact); band 0.5 around the expected 1.
+// 1D, measured orders on the quick levels 200, 400, 800 (L1_rho, L1_v, L1_p, L1_u):
+//   default 0.88 0.77 0.85 0.72; continuity33 0.90 0.78 0.82 0.72; euler=26 0.87 0.78 0.85 0.72;
+//   euler=25 0.88 0.78 0.84 0.71; euler=22 0.66 0.75 0.77 0.53; energy=38 0.85 0.78 0.89 0.66;
+//   integrator=chapter 0.88 0.77 0.85 0.72; visc_h=full 0.78 0.51 0.77 0.54
+// (fit standard errors 0.01-0.16). Pre-asymptotic: the local slope of L1_v and L1_u rises from
+// 0.4 to 1.0 across 100..1600 (start-up error at the contact). Band 0.5 around the expected 1:
+// it holds every measured variant and excludes a non-converging error (order 0, as (29) shows).
 OrderClaims first_order(const Params& p, int dim) {
-  if (p.text("timestep") == "chapter") return {};  // unstable, no errors
+  if (p.text("timestep") == "chapter") return {};  // unstable at every level: no errors
   OrderClaim claim{1.0, 0.5, why_first_order};
   // (29) is the Eulerian rate d(rho)/dt + v . grad rho: wrong by v . grad rho wherever a
-  // density gradient moves (the contact), an O(1) error that does not converge.
+  // density gradient moves (the contact), an O(1) error that does not converge (measured orders
+  // -0.05..0.00 on 200..800).
   if (p.text("density") == "continuity29")
     claim = no_order("(29) is the Eulerian rate: wrong by v . grad rho at the moving contact, an O(1) error that "
-                     "does not converge");
+                     "does not converge; gated to stay above a floor (half its measured value)");
   else if (dim > 1)
-    claim = no_order("2D/3D lattices: orders 0.3-0.6 on the affordable levels (pre-asymptotic, transverse lattice "
-                     "noise); the error is gated to fall with resolution");
+    claim = no_order("2D/3D lattices: orders 0.2-0.7 on the affordable levels (pre-asymptotic, transverse lattice "
+                     "noise); bounded, and L1_rho gated to fall with resolution");
+  if (!measured(p, dim))
+    claim = no_order("settings outside the catalogue's variants: no measured bound, only the verdict is gated");
   return {{"L1_rho", claim}, {"L1_v", claim}, {"L1_p", claim}, {"L1_u", claim}};
 }
 
@@ -255,12 +310,7 @@ Case make_case(int dim) {
     c.levels = {.quick = {12, 16}, .standard = {12, 16, 24, 32}, .full = {12, 16, 24, 32}};
     c.run = run<3>;
   }
-  c.gates = [dim](const Sweep& s) {
-    // Measured L1(rho) at the finest gate level (1D n = 800: 4.02e-3; 2D n = 100: 1.91e-2;
-    // 3D n = 16: 4.82e-2) plus a 20 % margin.
-    const double bound = dim == 1 ? 4.8e-3 : dim == 2 ? 2.3e-2 : 5.8e-2;
-    return tube_gates(s, bound, "measured at the finest gate level + 20 % margin", dim == 1);
-  };
+  c.gates = [dim](const Sweep& s) { return tube_gates(s, dim); };
   return c;
 }
 

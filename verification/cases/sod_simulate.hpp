@@ -91,7 +91,8 @@ void advance(sph::Scene<D, Terms...> scene, Layout<D>& L, const sph::HydroContro
   const sph::Totals<D> first = sph::totals(p, at_rest, 0, na);
   double pscale = first.momentum_scale;
   sph::HydroHooks<D> hooks;
-  hooks.constrain = [&](sph::Particles<D>& q, double t) {
+  hooks.constrain = [&](sph::Particles<D>& q, double t) {  // after every step, at its end time t
+    if (run.first_dt == 0.0) run.first_dt = t;
     for (std::size_t i = na; i < q.size(); ++i) {
       q.x[i] = L.initial.x[i] + t * L.initial.v[i];
       q.v[i] = L.initial.v[i];

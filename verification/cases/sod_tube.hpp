@@ -38,6 +38,7 @@ struct TubeRun {
   double energy_drift = 0.0;       // |E(t_end) - E(0)| / E(0)
   double energy_rate = 0.0;        // max_t |dE/dt| / rate scale (96)
   double mass_drift = 0.0;         // |M(t) - M(0)| / M(0)
+  double first_dt = 0.0;           // the first step the integrator took (0: none)
 };
 
 template <int D>

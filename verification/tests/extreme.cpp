@@ -81,13 +81,16 @@ TEST_CASE("noh reference: published post-shock states", "[reference][noh]") {
   }
 }
 
-TEST_CASE("gate: sedov density L1 converges (2D, n = 32, 64)", "[gate][extreme][sedov]") {
-  // Two levels, so the case's gates add the observed order of L1_rho (~12 s).
+TEST_CASE("sedov: the harness gates the density L1 order (2D, n = 32, 64)", "[extreme][sedov]") {
+  // Two levels, so the harness adds the order check of the claim (~12 s). Measured order 0.45
+  // (pre-asymptotic), inside 1 +- 0.6.
   const auto s = sweep_one_thread(sphv::find_case("sedov"), {32, 64}, {});
   REQUIRE(s.observed_order.count("L1_rho") == 1);
   for (const auto& ch : s.checks) {
     INFO(ch.name << " = " << ch.value << " in [" << ch.lo << ", " << ch.hi << "]: " << ch.why);
     CHECK(ch.pass());
   }
-  CHECK(std::any_of(s.checks.begin(), s.checks.end(), [](const sphv::Check& c) { return c.name == "L1_rho_order"; }));
+  CHECK(std::any_of(s.checks.begin(), s.checks.end(), [](const sphv::Check& c) { return c.name == "order_L1_rho"; }));
+  for (const auto& r : s.rows)
+    if (r.error == "L1_rho") CHECK(r.outcome == "verified");
 }
