@@ -1,6 +1,6 @@
 # Tiers and the catalogue pool (issue 14): a point killed by SIGKILL and one hanging past
 # --timeout end as those points' verdicts, the catalogue finishes (exit 1), JUnit names them.
 add_test(NAME verify_survives_crash_and_hang COMMAND bash ${CMAKE_SOURCE_DIR}/scripts/test-faults.sh $<TARGET_FILE:sphv> ${CMAKE_BINARY_DIR}/faults)
-set_tests_properties(verify_survives_crash_and_hang PROPERTIES PASS_REGULAR_EXPRESSION "^PASS" RUN_SERIAL TRUE)
+set_tests_properties(verify_survives_crash_and_hang PROPERTIES RUN_SERIAL TRUE)
 sphv_refuses(unknown_tier verify --tier huge --out ${CMAKE_BINARY_DIR}/verify_refused)
 sphv_refuses(negative_timeout verify --tier quick --timeout -1 --out ${CMAKE_BINARY_DIR}/verify_refused)
