@@ -73,13 +73,16 @@ struct Mesh {
     out.potential.push_back(w);
     if (w <= *std::min_element(out.potential.begin(), out.potential.end())) {
       out.t_max_compression = t;
-      out.r_profile.assign(n, 0.0);
-      out.rho_profile.assign(n, 0.0);
-      for (int k = 0; k < n; ++k) {
-        out.r_profile[k] = 0.5 * (s.r[k] + s.r[k + 1]);
-        out.rho_profile[k] = dm[k] / volume(s, k);
-      }
+      EvrardProfile p = profile(s);
+      out.r_profile = std::move(p.r_zone);
+      out.rho_profile = std::move(p.rho);
     }
+  }
+
+  EvrardProfile profile(const State& s) const {
+    EvrardProfile p{s.r, s.v, std::vector<double>(n), std::vector<double>(n), s.e};
+    for (int k = 0; k < n; ++k) p.r_zone[k] = 0.5 * (s.r[k] + s.r[k + 1]), p.rho[k] = dm[k] / volume(s, k);
+    return p;
   }
 };
 
@@ -144,6 +147,7 @@ EvrardSolution evrard_lagrangian(const EvrardOptions& o) {
     }
     mesh.record(s, t, out);
   }
+  out.at_end = mesh.profile(s);
   return out;
 }
 

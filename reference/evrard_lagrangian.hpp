@@ -41,12 +41,19 @@ struct EvrardOptions {
   long max_steps = 10000000;
 };
 
+// The state at t_end as radial profiles: node radii and velocities, zone-centre radii (the mean of
+// the zone's two nodes), densities and specific internal energies.
+struct EvrardProfile {
+  std::vector<double> r_node, v, r_zone, rho, e;
+};
+
 struct EvrardSolution {
   std::vector<double> t, kinetic, thermal, potential;  // E_kin, E_th, W at the output times
   long steps = 0;
   // Zone-centre radii and densities at the output time where W is smallest (maximum compression).
   double t_max_compression = 0.0;
   std::vector<double> r_profile, rho_profile;
+  EvrardProfile at_end;  // the profiles at t_end
 
   double total(std::size_t k) const { return kinetic[k] + thermal[k] + potential[k]; }
   // Linear interpolation of an energy curve (one of the vectors above) at time s in [0, t_end].

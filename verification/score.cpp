@@ -116,7 +116,7 @@ struct Options {
 void add_score_command(CLI::App& app) {
   auto o = std::make_shared<Options>();
   auto* cmd = app.add_subcommand("score", "score a snapshot of any SPH code against a case's exact reference");
-  cmd->add_option("case", o->case_name, "case name (sod, sod2d, sod3d, sedov, noh, heat, gravity)")->required();
+  cmd->add_option("case", o->case_name, "case name (sod, sod2d, sod3d, sedov, noh, evrard, heat, gravity)")->required();
   cmd->add_option("--snapshot", o->snapshot, "particle snapshot: CSV, SWIFT/GADGET HDF5 or H5Part")->required();
   cmd->add_option("--format", o->format, "auto|csv|swift|h5part (default auto)")
       ->check(CLI::IsMember({"auto", "csv", "swift", "h5part"}));

@@ -1,11 +1,12 @@
 // The scorers of `sphv score`: each reads the columns its case needs from a snapshot and calls
 // the same error function as the case's own run (sod_errors.hpp, sedov_errors.hpp,
-// noh_errors.hpp, heat_errors.hpp, gravity_compare.hpp).
+// noh_errors.hpp, evrard_errors.hpp, heat_errors.hpp, gravity_compare.hpp).
 #include <cmath>
 
 #include "reference/riemann.hpp"
 #include "reference/sedov.hpp"
 #include "verification/cases/centre_param.hpp"
+#include "verification/cases/evrard_errors.hpp"
 #include "verification/cases/gravity_compare.hpp"
 #include "verification/cases/heat_errors.hpp"
 #include "verification/cases/noh_errors.hpp"
@@ -101,6 +102,21 @@ Result score_noh(const Params& prm, const Snapshot& s) {
   return r;
 }
 
+Result score_evrard(const Params& prm, const Snapshot& s) {
+  const std::string who = "evrard";
+  positive(s, "rho", who);
+  positive(s, "m", who);
+  if (s.dim != 3) throw InputError(s.path.string() + ": evrard needs 3D particles (x, y, z), the file has " +
+                                   std::to_string(s.dim) + " coordinate(s)");
+  const double gamma = prm.real("gamma");
+  const auto& ref = evrard::reference_solution(static_cast<int>(prm.integer("zones")), gamma, prm.real("u0"),
+                                               prm.real("t_end"));
+  Result r;
+  evrard::measure_profiles(r, vectors<3>(s, "", who, radial::centre<3>(prm)), vectors<3>(s, "v", who), s.at("m", who),
+                           s.at("rho", who), internal_energy(s, gamma, who), ref.at_end, prm.real("t_end"));
+  return r;
+}
+
 Result score_heat(const Params& prm, const Snapshot& s) {
   const std::string who = "heat";
   positive(s, "rho", who);
@@ -112,9 +128,11 @@ Result score_heat(const Params& prm, const Snapshot& s) {
   }
   const double cv = prm.real("c_v");
   const double chi = heat::diffusivity(s.at("rho", who), prm.real("K"), cv);
+  const auto& [error, exact] = heat::setups.at(prm.text("setup"));
   Result r;
-  r.errors["spatial_gauss"] = heat::rms_error(s.at("u", who), heat::pulse_exact(coords, prm.real("t_end"), chi, cv));
+  r.errors[error] = heat::rms_error(s.at("u", who), exact(coords, prm.real("t_end"), chi, cv));
   r.extra["chi"] = chi;
+  r.extra["setup"] = prm.text("setup");
   return r;
 }
 
@@ -147,6 +165,7 @@ const std::map<std::string, Scorer>& scorers() {
       {"sod3d", {"t_end", score_tube, tube_t_end}},
       {"sedov", {"t", score_sedov, sedov::end_time, true}},
       {"noh", {"t_end", score_noh, real_t_end}},
+      {"evrard", {"t_end", score_evrard, real_t_end}},
       {"heat", {"t_end", score_heat, real_t_end}},
       {"gravity", {"", score_gravity, {}}}};
   return s;

@@ -76,3 +76,12 @@ add_test(NAME runner_ic_placeholder COMMAND bash -c
   "rm -rf runner_ic && $<TARGET_FILE:sphv> sweep sod --levels 100 --runner 'test -s {ic} && grep -q ^x,vx,m,rho,u,p,h {ic} && bash ${CMAKE_SOURCE_DIR}/verification/tests/external_code.sh $<TARGET_FILE:sphv> sod {n} {out} csv' --out runner_ic; grep -q '\"verdict\": \"ok\"' runner_ic/n100/result.json && echo PASS"
   WORKING_DIRECTORY ${_sdir})
 set_tests_properties(runner_ic_placeholder PROPERTIES PASS_REGULAR_EXPRESSION "PASS")
+
+# evrard from the command line: sphv run's particles as a SWIFT snapshot score to the run's
+# profile errors exactly (136 particles to t = 1.5, through the bounce: ~1 s).
+add_test(NAME score_evrard_round_trip COMMAND bash -c
+  "rm -rf ev_run ev_score && $<TARGET_FILE:sphv> --threads 1 run evrard --set n=100 t_end=1.5 zones=100 --out ev_run && $<TARGET_FILE:sphv> convert --input ev_run/particles.csv --out ev.hdf5 --format swift --time 1.5 && $<TARGET_FILE:sphv> score evrard --snapshot ev.hdf5 --set zones=100 --out ev_score && python3 ${CMAKE_SOURCE_DIR}/verification/tests/compare_score_run.py ev_score/result.json ev_run/result.json rho_profile_L1 vr_profile_L1 u_profile_L1"
+  WORKING_DIRECTORY ${_sdir})
+set_tests_properties(score_evrard_round_trip PROPERTIES PASS_REGULAR_EXPRESSION "PASS: 3 errors equal")
+file(WRITE ${_sdir}/evrard_1d.csv "# time = 1\nx,vx,m,rho,u\n0.1,0,1,1,1\n")
+score_refuses(evrard_not_3d evrard ${_sdir}/evrard_1d.csv)

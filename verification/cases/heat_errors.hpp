@@ -33,11 +33,25 @@ inline std::vector<double> pulse_exact(const std::vector<std::vector<double>>& c
   return u;
 }
 
+// The sine mode's exact u = c_v T(x, t), wave number 2 pi along every axis.
+inline std::vector<double> sine_exact(const std::vector<std::vector<double>>& coords, double t, double chi, double cv) {
+  std::vector<double> u(coords.size());
+  for (std::size_t i = 0; i < coords.size(); ++i) u[i] = cv * reference::sine_mode(coords[i], t, chi, T0, A, 1);
+  return u;
+}
+
+// The set-ups (error name -> exact u at the coordinates) a snapshot can be scored against.
+using ExactField = std::vector<double> (*)(const std::vector<std::vector<double>>&, double, double, double);
+inline const std::map<std::string, std::pair<std::string, ExactField>> setups = {
+    {"gauss", {"spatial_gauss", pulse_exact}}, {"sine", {"spatial_sine", sine_exact}}};
+
 inline const std::map<std::string, std::string> error_defs = {
     {"spatial_gauss", "sqrt(sum_i (u_i - c_v T_exact(x_i, t))^2 / N) / A over all N particles (unweighted RMS relative "
                       "to the amplitude A = 0.5): the Gaussian pulse (sigma0 = 0.1 at 0.5 per axis, T0 = 1) in the periodic "
-                      "unit box, chi = K / (mean(rho) c_v); sphv run integrates the SPH semi-discretisation by CVODE"},
-    {"spatial_sine", "as spatial_gauss for the sine mode (sphv run only)"},
+                      "unit box, chi = K / (mean(rho) c_v); sphv run integrates the SPH semi-discretisation by CVODE "
+                      "(sphv score: setup=gauss)"},
+    {"spatial_sine", "as spatial_gauss for the sine mode T = T0 + A exp(-chi d (2 pi)^2 t) prod_a sin(2 pi x_a) "
+                     "(sphv score: setup=sine)"},
     {"time_euler", "RMS (as spatial_gauss) of forward Euler at dt = C h^2 / chi against CVODE (sphv run only)"},
     {"time_heun", "as time_euler for Heun (sphv run only)"}};
 
