@@ -89,9 +89,9 @@ const std::vector<Case>& catalogue();
 const Case& find_case(const std::string& name);  // throws InputError for an unknown name
 
 // Calls f(std::integral_constant<int, D>{}) for D = the parameter "dim" (1, 2 or 3): the one
-// place where a case's runtime dimension becomes a template argument.
+// place where a case's runtime dimension becomes a template argument. Returns what f returns.
 template <class F>
-Result by_dimension(const Params& p, F&& f) {
+auto by_dimension(const Params& p, F&& f) -> decltype(f(std::integral_constant<int, 1>{})) {
   switch (p.integer("dim")) {
     case 1: return f(std::integral_constant<int, 1>{});
     case 2: return f(std::integral_constant<int, 2>{});

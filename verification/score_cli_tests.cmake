@@ -34,6 +34,14 @@ score_refuses(missing_file sod ${_sdir}/no_such_file.csv)
 sphv_refuses(score_unknown_case score no_such_case --snapshot ${_sdir}/nan.csv)
 sphv_refuses(score_case_without_scorer score kernel --snapshot ${_sdir}/nan.csv)
 sphv_refuses(ic_case_without_writer ic kernel --out ${_sdir}/ic.csv)
+# sphv ic beyond the shock tubes: the file holds the case's particles (n^3 for a 3D Sedov lattice, plus the header row).
+add_test(NAME ic_sedov_3d_swift COMMAND bash -c
+  "$<TARGET_FILE:sphv> ic sedov --set dim=3 n=12 --out sedov_ic.hdf5 --format swift && $<TARGET_FILE:sphv> convert --input sedov_ic.hdf5 --out sedov_ic.csv --format csv && test $(grep -vc '^#' sedov_ic.csv) -eq 1729 && echo PASS"
+  WORKING_DIRECTORY ${_sdir})
+set_tests_properties(ic_sedov_3d_swift PROPERTIES PASS_REGULAR_EXPRESSION "sedov n=12: initial conditions written(.|\n)*PASS")
+add_test(NAME ic_noh_h5part COMMAND sphv ic noh --set dim=2 n=20 --out ${_sdir}/noh_ic.h5 --format h5part)
+set_tests_properties(ic_noh_h5part PROPERTIES PASS_REGULAR_EXPRESSION "noh n=20: initial conditions written")
+sphv_refuses(ic_noh_too_many_particles ic noh --set dim=3 --out ${_sdir}/noh_ic.csv)
 
 # The SPH-EXA fixture scores as a Sedov blast from the command line (the last step by default).
 add_test(NAME score_sphexa_h5part COMMAND sphv score sedov --snapshot ${CMAKE_SOURCE_DIR}/verification/tests/data/sphexa-sedov-n12.h5 --out ${_sdir}/sphexa)

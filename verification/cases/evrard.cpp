@@ -8,43 +8,18 @@
 // which `sphv score evrard` shares).
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 #include "reference/interpolate.hpp"
 #include "sph/self_gravity.hpp"
 #include "verification/case.hpp"
 #include "verification/cases/centre_param.hpp"
 #include "verification/cases/evrard_errors.hpp"
+#include "verification/cases/evrard_setup.hpp"
 #include "verification/cases/extreme_hydro.hpp"
 #include "verification/sweep.hpp"
 
 namespace sphv {
 namespace {
-
-constexpr double pi = std::numbers::pi;
-
-// Particles of the unit sphere with rho = 1 / (2 pi r): a cubic lattice cut to the unit ball
-// (uniform, M(<r) = r^3) stretched radially r -> r^(3/2), which makes M(<r) = r^2. Equal masses.
-sph::Particles<3> evrard_sphere(long n, double u0, double hfact) {
-  const int side = std::max(2, static_cast<int>(std::lround(std::cbrt(6.0 * n / pi))));  // pi side^3 / 6 ~ n
-  sph::Box<3> cube = sph::unit_box<3>(false);
-  cube.lo = sph::Vec<3>::Constant(-1.0);
-  const sph::Particles<3> grid = sph::lattice<3>(side, cube, 1.0, hfact);
-  sph::Particles<3> p;
-  std::vector<sph::Vec<3>> x;
-  for (const auto& xi : grid.x)
-    if (xi.norm() < 1.0) x.push_back(xi * std::sqrt(xi.norm()));  // |x| -> |x|^(3/2)
-  p.resize(x.size());
-  p.x = x;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    const double r = std::max(p.x[i].norm(), 1e-3);
-    p.m[i] = 1.0 / p.size();
-    p.u[i] = u0;
-    p.rho[i] = 1.0 / (2.0 * pi * r);
-    p.h[i] = hfact * std::cbrt(p.m[i] / p.rho[i]);  // (50) with the target density; iterated below
-  }
-  return p;
-}
 
 // Energy curves of the SPH run, one entry per recorded state.
 struct Curves {
@@ -69,7 +44,7 @@ Result run(const Params& prm) {
   sph::SelfGravity gravity{{prm.real("theta"), prm.real("eps"), 1.0, sph::Multipole::quadrupole,
                             sph::Opening::robust},
                            {}};
-  sph::Particles<3> p = evrard_sphere(prm.integer("n"), u0, m.hfact);
+  sph::Particles<3> p = evrard::sphere(prm.integer("n"), u0, m.hfact);
   const sph::Box<3> box = sph::unit_box<3>(false);
 
   Curves sph_e;

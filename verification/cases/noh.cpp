@@ -11,19 +11,12 @@
 #include "verification/cases/extreme_hydro.hpp"
 #include "verification/cases/centre_param.hpp"
 #include "verification/cases/noh_errors.hpp"
+#include "verification/cases/noh_setup.hpp"
 #include "verification/cases/radial_result.hpp"
 #include "verification/sweep.hpp"
 
 namespace sphv {
 namespace {
-
-// Gas out to R0. The gas that meets the shock by t_end started within R_s + t_end = 4 t_end / 3;
-// the shock runs ahead of R_s by up to ~5% in 1D/2D (measured), so a margin of 10% of that, plus
-// one initial support radius for the neighbourhood of the last gas that matters. (A bare 3 h0 is
-// 0.7 of the radius at the 3D gate size, n = 10, and tripled its particles.)
-double gas_radius(double t_end, double h0) { return 1.1 * 4.0 / 3.0 * t_end + h0; }
-
-using noh::ball_volume;
 
 template <int D>
 Result run_dim(const Params& prm) {
@@ -34,26 +27,8 @@ Result run_dim(const Params& prm) {
   if (radial::centre<D>(prm) != sph::Vec<D>::Zero())
     throw InputError("noh: centre is for scoring snapshots (sphv score); sphv run puts the centre at the origin");
   const reference::Noh exact(D, m.gamma);
-  const double dx = 1.0 / n, h0 = m.hfact * dx;
-  const double R0 = gas_radius(t_end, h0);
-  const int k = static_cast<int>(std::ceil(R0 / dx));
-  sph::Box<D> box = sph::unit_box<D>(false);
-  box.lo = sph::Vec<D>::Constant(-(k + 1) * dx);
-  box.hi = sph::Vec<D>::Constant((k + 1) * dx);
-  sph::Particles<D> all = sph::lattice<D>(2 * k, sph::Box<D>{box.lo + sph::Vec<D>::Constant(dx), box.hi - sph::Vec<D>::Constant(dx), box.periodic}, 1.0, m.hfact);
-  sph::Particles<D> p;
-  for (std::size_t i = 0; i < all.size(); ++i)
-    if (all.x[i].norm() < R0) {
-      const double r = all.x[i].norm();
-      p.x.push_back(all.x[i]);
-      p.v.push_back(-all.x[i] / r);  // unit inflow
-      p.m.push_back(all.m[i]);
-      p.rho.push_back(1.0);
-      p.p.push_back(0.0);
-      p.c.push_back(0.0);
-      p.u.push_back(prm.real("u_cold"));
-      p.h.push_back(h0);
-    }
+  auto [box, p, R0] = noh::initial<D>(prm, m.hfact);
+  const double h0 = m.hfact * (1.0 / n);  // as noh::initial computes it
   // The free surface's self-density floor (49): h at most 3 h0 (its density is never used).
   m.h_max = 3.0 * h0;
 
@@ -69,19 +44,7 @@ Result run_dim(const Params& prm) {
 }
 
 Result run(const Params& p) {
-  const long dim = p.integer("dim"), n = p.integer("n");
-  const double t_end = p.real("t_end"), hfact = p.real("hfact");
-  // n counts per unit length in every dimension: the 1D default (200) means ~1e5 particles in
-  // 2D and ~2e7 in 3D. The finest sweep levels (2D n=100, 3D n=20) have <= 3.4e4. Runs above
-  // max_particles are refused (raise it on purpose for a larger run). Checked here, not in
-  // validate: a variant's settings are validated with the default n before its levels.
-  const double N = ball_volume(static_cast<int>(dim), gas_radius(t_end, hfact / n)) * std::pow(double(n), dim);  // particles
-  const double cap = p.real("max_particles");
-  if (N > cap)
-    throw InputError("noh: n = " + std::to_string(n) + " in " + std::to_string(dim) + "D means ~" +
-                     std::to_string(static_cast<long>(N)) + " particles (max_particles " +
-                     std::to_string(static_cast<long>(cap)) +
-                     "); n counts per unit length: use n ~ 50 in 2D, 10-20 in 3D, or raise max_particles");
+  noh::check_size(p);
   return by_dimension(p, [&](auto d) { return run_dim<d>(p); });
 }
 

@@ -21,6 +21,7 @@
 #include "verification/cases/centre_param.hpp"
 #include "verification/cases/radial_result.hpp"
 #include "verification/cases/sedov_errors.hpp"
+#include "verification/cases/sedov_setup.hpp"
 #include "verification/sweep.hpp"
 
 namespace sphv {
@@ -37,19 +38,11 @@ Result run_dim(const Params& prm) {
   if (radial::centre<D>(prm) != sph::Vec<D>::Zero())
     throw InputError("sedov: centre is for scoring snapshots (sphv score); sphv run puts the blast at the origin");
   m.controls.t_end = sedov::end_time(prm);
-  sph::Box<D> box = sph::unit_box<D>(true);
-  box.lo = sph::Vec<D>::Constant(-0.5);
-  box.hi = sph::Vec<D>::Constant(0.5);
-  sph::Particles<D> p = sph::lattice<D>(n, box, rho0, m.hfact);
+  const sph::Box<D> box = sedov::box<D>();
+  // The blast in a cold gas (u_ambient: the similarity solution's, p0 / p_shock ~ 1e-6).
+  sph::Particles<D> p = sedov::initial_particles<D>(prm, m.hfact);
   m.h_max = 0.45;  // below half the periodic box
-  // Blast: E shared by kernel weight W(r, r_b) among the particles within r_b of the centre; all
-  // particles have a thermal energy u_ambient (the similarity solution's cold gas, p0 / p_shock
-  // ~ 1e-6).
   const double r_b = prm.real("r_blast") * R_target;
-  double wsum = 0.0;
-  for (std::size_t i = 0; i < p.size(); ++i) wsum += p.m[i] * sph::CubicSpline<D>::W(p.x[i].norm(), r_b);
-  for (std::size_t i = 0; i < p.size(); ++i)
-    p.u[i] = prm.real("u_ambient") + E * sph::CubicSpline<D>::W(p.x[i].norm(), r_b) / wsum;
   double E0 = 0.0;
   for (std::size_t i = 0; i < p.size(); ++i) E0 += p.m[i] * p.u[i];
 
