@@ -109,11 +109,13 @@ Result score_evrard(const Params& prm, const Snapshot& s) {
   if (s.dim != 3) throw InputError(s.path.string() + ": evrard needs 3D particles (x, y, z), the file has " +
                                    std::to_string(s.dim) + " coordinate(s)");
   const double gamma = prm.real("gamma");
-  const auto& ref = evrard::reference_solution(static_cast<int>(prm.integer("zones")), gamma, prm.real("u0"),
-                                               prm.real("t_end"));
+  const int zones = static_cast<int>(prm.integer("zones"));
+  const double t = prm.real("t_end"), u0 = prm.real("u0");
+  const auto& ref = evrard::reference_solution(zones, gamma, u0, t);
+  const auto& half = evrard::reference_solution(zones / 2, gamma, u0, t);
   Result r;
   evrard::measure_profiles(r, vectors<3>(s, "", who, radial::centre<3>(prm)), vectors<3>(s, "v", who), s.at("m", who),
-                           s.at("rho", who), internal_energy(s, gamma, who), ref.at_end, prm.real("t_end"));
+                           s.at("rho", who), internal_energy(s, gamma, who), ref.at_end, half.at_end, t);
   return r;
 }
 

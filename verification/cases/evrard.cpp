@@ -100,7 +100,7 @@ Result run(const Params& prm) {
   r.errors = {{"energy_conservation", drift}, {"kinetic_L1", dk.l1}, {"kinetic_max", dk.max},
               {"thermal_L1", du.l1},          {"thermal_max", du.max}, {"potential_L1", dw.l1},
               {"potential_max", dw.max}};
-  evrard::measure_profiles(r, p.x, p.v, p.m, p.rho, p.u, ref.at_end, out.t);
+  evrard::measure_profiles(r, p.x, p.v, p.m, p.rho, p.u, ref.at_end, ref_half.at_end, out.t);
   const auto th_peak = std::max_element(sph_e.thermal.begin(), sph_e.thermal.end()) - sph_e.thermal.begin();
   r.functionals = {{"thermal_peak", sph_e.thermal[th_peak]}, {"potential_min", w_min}, {"t_max_compression", t_comp}};
   const auto ref_peak = std::max_element(ref.thermal.begin(), ref.thermal.end()) - ref.thermal.begin();

@@ -44,25 +44,50 @@ inline const std::map<std::string, std::string> profile_error_defs = {
      "sum_i m_i |u_i - u_ref(r_i, t)| / sum_i m_i, units G M / R; u_ref: the reference's zone specific internal "
      "energies, as rho_ref"}};
 
+// The three errors above of values (rho, v_r, u) at radii rad against the reference's profiles.
+struct ProfileL1 {
+  double rho = 0.0, vr = 0.0, u = 0.0;
+};
+inline ProfileL1 profile_l1(const std::vector<double>& rad, const std::vector<double>& m, const std::vector<double>& rho,
+                            const std::vector<double>& v_r, const std::vector<double>& u,
+                            const reference::EvrardProfile& ref) {
+  using reference::interpolate_linear;
+  double mass = 0.0;
+  ProfileL1 e;
+  for (std::size_t i = 0; i < rad.size(); ++i) {
+    mass += m[i];
+    e.rho += m[i] * std::abs(rho[i] / interpolate_linear(ref.r_zone, ref.rho, rad[i]) - 1.0);
+    e.vr += m[i] * std::abs(v_r[i] - interpolate_linear(ref.r_node, ref.v, rad[i]));
+    e.u += m[i] * std::abs(u[i] - interpolate_linear(ref.r_zone, ref.e, rad[i]));
+  }
+  return {e.rho / mass, e.vr / mass, e.u / mass};
+}
+
 // Fills r.errors (the three above), the profile figures and extras from the particles at time t
-// (positions relative to the sphere's centre) and the reference's state at t.
+// (positions relative to the sphere's centre) and the reference's state at t; half: the
+// reference with half the zones, whose profiles at the particles' radii, measured the same way,
+// give the reference's own error (extra.reference_profile_L1_half_zones).
 inline void measure_profiles(Result& r, const std::vector<sph::Vec<3>>& x, const std::vector<sph::Vec<3>>& v,
                              const std::vector<double>& m, const std::vector<double>& rho, const std::vector<double>& u,
-                             const reference::EvrardProfile& ref, double t) {
+                             const reference::EvrardProfile& ref, const reference::EvrardProfile& half, double t) {
   using reference::interpolate_linear;
-  double mass = 0.0, e_rho = 0.0, e_v = 0.0, e_u = 0.0;
   std::vector<double> rad(x.size()), v_r(x.size());
   for (std::size_t i = 0; i < x.size(); ++i) {
     rad[i] = x[i].norm();
     v_r[i] = rad[i] > 0.0 ? v[i].dot(x[i]) / rad[i] : 0.0;
-    mass += m[i];
-    e_rho += m[i] * std::abs(rho[i] / interpolate_linear(ref.r_zone, ref.rho, rad[i]) - 1.0);
-    e_v += m[i] * std::abs(v_r[i] - interpolate_linear(ref.r_node, ref.v, rad[i]));
-    e_u += m[i] * std::abs(u[i] - interpolate_linear(ref.r_zone, ref.e, rad[i]));
   }
-  r.errors["rho_profile_L1"] = e_rho / mass;
-  r.errors["vr_profile_L1"] = e_v / mass;
-  r.errors["u_profile_L1"] = e_u / mass;
+  const ProfileL1 e = profile_l1(rad, m, rho, v_r, u, ref);
+  r.errors["rho_profile_L1"] = e.rho;
+  r.errors["vr_profile_L1"] = e.vr;
+  r.errors["u_profile_L1"] = e.u;
+  std::vector<double> h_rho(x.size()), h_v(x.size()), h_u(x.size());
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    h_rho[i] = interpolate_linear(half.r_zone, half.rho, rad[i]);
+    h_v[i] = interpolate_linear(half.r_node, half.v, rad[i]);
+    h_u[i] = interpolate_linear(half.r_zone, half.e, rad[i]);
+  }
+  const ProfileL1 eh = profile_l1(rad, m, h_rho, h_v, h_u, ref);
+  r.extra["reference_profile_L1_half_zones"] = {{"rho", eh.rho}, {"vr", eh.vr}, {"u", eh.u}};
   r.extra["profile_time"] = t;
   r.extra["reference_outer_radius"] = ref.r_node.back();
 
