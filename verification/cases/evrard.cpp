@@ -226,8 +226,13 @@ const Registration reg{Case{
                                  "first order in h ~ N^(-1/3) at fixed hfact, i.e. order 1/3 in the particle number"};
           const OrderClaim info = no_order("reported for information: the largest difference sits at the bounce "
                                            "shock; the L1 of the same curve carries the claim");
-          const OrderClaim profile = no_order("profiles at t_end (shared with sphv score): reported for information, "
-                                              "their order across levels is not measured yet");
+          // Measured at n = 912, 2176 (t_end 3, 800 zones): rho 0.703, 0.918; v_r 0.101, 0.081; u 0.127,
+          // 0.122. The density error grows: most of it sits at the outgoing shock (0.5 < r < 1 holds
+          // half of it at 2176), whose position in SPH's softer bounce differs from the 1D one. The
+          // reference's own error in the same norm (400 against 800 zones) is 1.4e-2, 1.9e-2 (rho), 5-6e-3 (v_r, u).
+          const OrderClaim profile = no_order("profiles at t_end (shared with sphv score): reported for information; "
+                                              "not in the asymptotic range on the affordable levels (rho_profile_L1 "
+                                              "0.70, 0.92 at n = 912, 2176: the bounce shock's position differs)");
           return OrderClaims{{"kinetic_L1", third}, {"thermal_L1", third}, {"potential_L1", third},
                              {"kinetic_max", info}, {"thermal_max", info}, {"potential_max", info},
                              {"rho_profile_L1", profile}, {"vr_profile_L1", profile}, {"u_profile_L1", profile},
