@@ -108,6 +108,12 @@ Result score_evrard(const Params& prm, const Snapshot& s) {
   positive(s, "m", who);
   if (s.dim != 3) throw InputError(s.path.string() + ": evrard needs 3D particles (x, y, z), the file has " +
                                    std::to_string(s.dim) + " coordinate(s)");
+  double mass = 0.0;
+  for (double m : s.at("m", who)) mass += m;
+  // The reference is in units G = M = R = 1: a units check, not an accuracy bound.
+  if (!(std::abs(mass - 1.0) <= 1e-3))
+    throw InputError(s.path.string() + ": the particles' total mass is " + std::to_string(mass) +
+                     "; evrard scores the sphere in units G = M = R = 1 (rescale the snapshot)");
   const double gamma = prm.real("gamma");
   const int zones = static_cast<int>(prm.integer("zones"));
   const double t = prm.real("t_end"), u0 = prm.real("u0");

@@ -93,3 +93,5 @@ add_test(NAME score_evrard_round_trip COMMAND bash -c
 set_tests_properties(score_evrard_round_trip PROPERTIES PASS_REGULAR_EXPRESSION "PASS: 3 errors equal")
 file(WRITE ${_sdir}/evrard_1d.csv "# time = 1\nx,vx,m,rho,u\n0.1,0,1,1,1\n")
 score_refuses(evrard_not_3d evrard ${_sdir}/evrard_1d.csv)
+file(WRITE ${_sdir}/evrard_mass2.csv "# time = 1\nx,y,z,vx,vy,vz,m,rho,u\n0.1,0,0,0,0,0,2,1,1\n")
+score_refuses(evrard_units evrard ${_sdir}/evrard_mass2.csv)
