@@ -2,6 +2,7 @@
 // the same error function as the case's own run (sod_errors.hpp, sedov_errors.hpp,
 // noh_errors.hpp, evrard_errors.hpp, heat_errors.hpp, gravity_compare.hpp).
 #include <cmath>
+#include <stdexcept>
 
 #include "reference/riemann.hpp"
 #include "reference/sedov.hpp"
@@ -117,8 +118,15 @@ Result score_evrard(const Params& prm, const Snapshot& s) {
   const double gamma = prm.real("gamma");
   const int zones = static_cast<int>(prm.integer("zones"));
   const double t = prm.real("t_end"), u0 = prm.real("u0");
-  const auto& ref = evrard::reference_solution(zones, gamma, u0, t);
-  const auto& half = evrard::reference_solution(zones / 2, gamma, u0, t);
+  auto reference = [&](int z) -> const reference::EvrardSolution& {
+    try {
+      return evrard::reference_solution(z, gamma, u0, t);
+    } catch (const std::invalid_argument& e) {  // the 1D solver's step budget or a zone gone bad
+      throw InputError(s.path.string() + ": no 1D reference at its time " + std::to_string(t) + ": " + e.what());
+    }
+  };
+  const auto& ref = reference(zones);
+  const auto& half = reference(zones / 2);
   Result r;
   evrard::measure_profiles(r, vectors<3>(s, "", who, radial::centre<3>(prm)), vectors<3>(s, "v", who), s.at("m", who),
                            s.at("rho", who), internal_energy(s, gamma, who), ref.at_end, half.at_end, t);
