@@ -95,6 +95,7 @@ Result score_snapshot(const Case& c, std::vector<std::string> settings, const Sn
   for (const auto& [k, v] : r.errors)
     if (c.error_defs.count(k)) defs[k] = c.error_defs.at(k);
   r.extra["error_defs"] = defs;
+  name_non_finite(r);  // a snapshot's extreme values (u = 1e300) can overflow an error: a verdict, not a NaN
   return r;
 }
 

@@ -41,18 +41,49 @@ inline hid_t open_read(const std::filesystem::path& path) {
 
 inline bool exists(hid_t loc, const std::string& name) { return H5Lexists(loc, name.c_str(), H5P_DEFAULT) > 0; }
 
+// Refuses an element type other than a plain integer or IEEE-like float (sizes 1-8 bytes, bit
+// fields inside the element). HDF5 1.10's conversion to double trusts the type's bit fields: a
+// damaged file declaring a 32-bit integer with 38176 bits of precision smashed its stack (found
+// by the snapshot fuzz test).
+inline void check_numeric_type(hid_t type, const std::string& what, const std::string& file) {
+  const H5T_class_t cls = H5Tget_class(type);
+  const std::size_t size = H5Tget_size(type), bits = 8 * size;
+  const int precision = static_cast<int>(H5Tget_precision(type)), offset = H5Tget_offset(type);
+  bool ok = (cls == H5T_INTEGER || cls == H5T_FLOAT) && size >= 1 && size <= 8 && precision > 0 && offset >= 0 &&
+            static_cast<std::size_t>(offset + precision) <= bits;
+  if (ok && cls == H5T_FLOAT) {
+    size_t spos = 0, epos = 0, esize = 0, mpos = 0, msize = 0;
+    ok = H5Tget_fields(type, &spos, &epos, &esize, &mpos, &msize) >= 0 && esize >= 2 && esize <= 15 && msize <= 64 &&
+         spos < bits && epos + esize <= bits && mpos + msize <= bits;
+  }
+  if (!ok) throw InputError(file + ": " + what + " is not stored as plain integers or floating-point numbers");
+}
+
 // A whole dataset as doubles, with its dimensions.
 inline std::vector<double> read_dataset(hid_t loc, const std::string& name, const std::string& file,
                                         std::vector<hsize_t>& dims) {
   const Handle ds(H5Dopen2(loc, name.c_str(), H5P_DEFAULT), H5Dclose);
   if (!ds.ok()) throw InputError(file + ": cannot open dataset " + name);
+  const Handle type(H5Dget_type(ds), H5Tclose);
+  check_numeric_type(type, "dataset " + name, file);
   const Handle space(H5Dget_space(ds), H5Sclose);
   const int rank = H5Sget_simple_extent_ndims(space);
-  if (rank < 0 || rank > 2) throw InputError(file + ": dataset " + name + " has rank " + std::to_string(rank) + " (expected 1 or 2)");
+  if (rank < 1 || rank > 2) throw InputError(file + ": dataset " + name + " has rank " + std::to_string(rank) + " (expected 1 or 2)");
   dims.assign(rank, 0);
   H5Sget_simple_extent_dims(space, dims.data(), nullptr);
+  // A damaged header can declare any size: refuse more values than a snapshot this tool reads
+  // holds (1e9 doubles, 8 GB) before allocating.
+  constexpr hsize_t max_values = 1'000'000'000;
   hsize_t total = 1;
-  for (hsize_t d : dims) total *= d;
+  for (hsize_t d : dims) total = d == 0 ? 0 : total > max_values / d ? max_values + 1 : total * d;
+  if (total > max_values) throw InputError(file + ": dataset " + name + " declares more than 1e9 values");
+  // Stored contiguously (not chunked and compressed), its bytes in the file are its values.
+  const Handle plist(H5Dget_create_plist(ds), H5Pclose);
+  const H5D_layout_t layout = H5Pget_layout(plist);
+  if ((layout == H5D_CONTIGUOUS || layout == H5D_COMPACT) && total > 0 &&
+      H5Dget_storage_size(ds) != total * H5Tget_size(type))
+    throw InputError(file + ": dataset " + name + " declares " + std::to_string(total) + " values but stores " +
+                     std::to_string(H5Dget_storage_size(ds)) + " bytes (damaged file?)");
   std::vector<double> v(total);
   if (total > 0 && H5Dread(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()) < 0)
     throw InputError(file + ": cannot read dataset " + name + " (truncated file or a non-numeric type)");
@@ -63,12 +94,26 @@ inline std::vector<double> read_dataset(hid_t loc, const std::string& name, cons
 inline std::optional<std::vector<double>> read_attribute(hid_t obj, const std::string& name, const std::string& file) {
   if (H5Aexists(obj, name.c_str()) <= 0) return std::nullopt;
   const Handle a(H5Aopen(obj, name.c_str(), H5P_DEFAULT), H5Aclose);
+  if (!a.ok()) throw InputError(file + ": cannot read attribute " + name);
+  const Handle type(H5Aget_type(a), H5Tclose);
+  check_numeric_type(type, "attribute " + name, file);
   const Handle space(H5Aget_space(a), H5Sclose);
   const hssize_t n = H5Sget_simple_extent_npoints(space);
   std::vector<double> v(n > 0 ? n : 0);
   if (!a.ok() || n <= 0 || H5Aread(a, H5T_NATIVE_DOUBLE, v.data()) < 0)
     throw InputError(file + ": cannot read attribute " + name + " as numbers");
   return v;
+}
+
+// A numeric attribute that must hold a whole number in [lo, hi], or nothing when it is absent.
+inline std::optional<int> read_int_attribute(hid_t obj, const std::string& name, const std::string& file, int lo, int hi) {
+  const auto v = read_attribute(obj, name, file);
+  if (!v) return std::nullopt;
+  const double d = v->at(0);
+  if (!(d >= lo && d <= hi) || d != static_cast<double>(static_cast<int>(d)))
+    throw InputError(file + ": attribute " + name + " is " + std::to_string(d) + " (expected a whole number from " +
+                     std::to_string(lo) + " to " + std::to_string(hi) + ")");
+  return static_cast<int>(d);
 }
 
 // Writing: a new file at a temporary name, renamed by `commit` once complete.

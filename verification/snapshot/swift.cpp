@@ -31,10 +31,8 @@ Snapshot read_swift_snapshot(const std::filesystem::path& path) {
   if (h5::exists(file, "Header")) {
     const h5::Handle header(H5Gopen2(file, "Header", H5P_DEFAULT), H5Gclose);
     if (auto t = h5::read_attribute(header, "Time", f)) s.time = t->at(0);
-    if (auto d = h5::read_attribute(header, "Dimension", f)) header_dim = static_cast<int>(d->at(0));
+    header_dim = h5::read_int_attribute(header, "Dimension", f, 1, 3);
   }
-  if (header_dim && (*header_dim < 1 || *header_dim > 3))
-    throw InputError(f + ": /Header Dimension is " + std::to_string(*header_dim) + " (expected 1, 2 or 3)");
   const h5::Handle gas(H5Gopen2(file, "PartType0", H5P_DEFAULT), H5Gclose);
   for (const auto& [prefix, names] : vectors)
     for (const auto& name : names) {

@@ -1,11 +1,12 @@
 // Catch2 gates: every case tagged "gate" runs its quick tier (the CI-sized levels `sphv verify
 // --tier quick` runs, from the case's one declaration) for each variant, and every check and
-// every error's outcome must hold. Areas with their own test files add finer unit tests.
+// every error's outcome must hold; its smallest level must give the same bits on two threads. Areas with their own test files add finer unit tests.
 #define CATCH_CONFIG_MAIN
 #include <catch2/catch.hpp>
 
 #include <omp.h>
 
+#include <cstring>
 #include <set>
 #include <sstream>
 
@@ -13,15 +14,49 @@
 
 namespace {
 
+// A fixed number of OpenMP threads for one scope.
+struct Threads {
+  int before = omp_get_max_threads();
+  explicit Threads(int n) { omp_set_num_threads(n); }
+  ~Threads() { omp_set_num_threads(before); }
+};
+
 // One thread: the gate scenes are small (at most a few thousand particles) and run many short
 // pair loops, where a fork-join per loop costs more than it gains, above all when ctest runs
 // tests side by side (measured: conservation 24 s on one thread against 105 s on two, loaded).
 // Results do not depend on the thread count (sph/pairs.hpp).
-struct OneThread {
-  int before = omp_get_max_threads();
-  OneThread() { omp_set_num_threads(1); }
-  ~OneThread() { omp_set_num_threads(before); }
+struct OneThread : Threads {
+  OneThread() : Threads(1) {}
 };
+
+// The names whose values differ bit for bit between two runs (or are in one only).
+std::string differences(const std::map<std::string, double>& a, const std::map<std::string, double>& b) {
+  std::ostringstream o;
+  o.precision(17);
+  for (const auto& [k, v] : a)
+    if (!b.count(k)) o << k << " in one run only; ";
+    else if (std::memcmp(&v, &b.at(k), sizeof v) != 0) o << k << ": " << v << " vs " << b.at(k) << "; ";
+  for (const auto& [k, v] : b)
+    if (!a.count(k)) o << k << " in one run only; ";
+  return o.str();
+}
+
+// Thread-count independence (sph/pairs.hpp: each particle's sums in a fixed order, whatever
+// thread computes them): the sweep's smallest level, run on one thread, again on two threads
+// gives the same verdict, errors and functionals bit for bit.
+void require_thread_independent(const sphv::Case& c, const std::vector<std::string>& settings, const sphv::Sweep& s) {
+  auto at_smallest = settings;
+  at_smallest.push_back("n=" + std::to_string(s.levels.front()));
+  const sphv::Result& one = s.runs.front();
+  const sphv::Result two = [&] {
+    const Threads t(2);
+    return sphv::run_case(c, c.parse(at_smallest));
+  }();
+  INFO("n = " << s.levels.front() << " on one thread and on two");
+  CHECK(one.verdict == two.verdict);
+  CHECK(differences(one.errors, two.errors) == "");
+  CHECK(differences(one.functionals, two.functionals) == "");
+}
 
 // Everything a failure message needs: verdicts, orders, every check with its bounds and kind.
 std::string describe(const sphv::Sweep& s) {
@@ -44,6 +79,7 @@ void gate(const std::string& name) {
     const sphv::Sweep s = sphv::run_tier(c, sphv::Tier::quick, settings);
     INFO(describe(s));
     CHECK(s.passed());
+    require_thread_independent(c, settings, s);
   }
 }
 
@@ -73,6 +109,8 @@ TEST_CASE("every gated case has a gate test, checks and claims for its errors", 
         }
   }
   REQUIRE(gated >= 24);
+  // Every case is gated, so the gates check every case's thread-count independence too.
+  CHECK(gated == static_cast<int>(sphv::catalogue().size()));
 }
 
 TEST_CASE("drift baselines catch an error that grows and one that went stale", "[baseline]") {
