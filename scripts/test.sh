@@ -1,11 +1,14 @@
 #!/usr/bin/env bash
-# The tests: install what is missing, build (warnings as errors), run every Catch2 gate and
-# CLI test under ctest (JUnit XML for CI dashboards: build/junit.xml).
+# The tests: install what is missing, build (warnings as errors), run every Catch2 gate, CLI
+# test and sanitizer test under ctest (JUnit XML for CI dashboards: build/junit.xml).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 # Warnings are errors here: a full build of main at 542cd4f and 33c4caf gave 0 warnings under
 # -Wall -Wextra -Wpedantic (GCC 12.2).
 export SPHV_WERROR=${SPHV_WERROR:-ON}
+# The sanitizer tests (ASan + UBSan on the input and file code, verification/sanitizer_tests.cmake)
+# are built and run with the others.
+export SPHV_SANITIZER_TESTS=${SPHV_SANITIZER_TESTS:-ON}
 bash scripts/build.sh
 # Tests run side by side with OpenMP inside: threads that wait should sleep, not spin.
 export OMP_WAIT_POLICY=${OMP_WAIT_POLICY:-passive}

@@ -119,9 +119,13 @@ inline Profile radial_profile(const std::vector<double>& radius, const std::vect
   const double dr = r_max / bins;
   std::vector<double> sum(bins, 0.0);
   pr.count.assign(bins, 0);
+  if (!(dr > 0.0)) return pr;  // a scored snapshot can give r_max = 0 or NaN (no shock found)
   for (std::size_t i = 0; i < radius.size(); ++i) {
-    const int k = static_cast<int>(radius[i] / dr);
-    if (k < bins) sum[k] += value[i], ++pr.count[k];
+    const double q = radius[i] / dr;  // bin index, compared before the cast (NaN and huge q stay out)
+    if (q >= 0.0 && q < bins) {
+      const int k = static_cast<int>(q);
+      sum[k] += value[i], ++pr.count[k];
+    }
   }
   for (int k = 0; k < bins; ++k)
     if (pr.count[k] > 0) pr.r.push_back((k + 0.5) * dr), pr.mean.push_back(sum[k] / pr.count[k]);

@@ -88,25 +88,29 @@ void check(const Snapshot& s) {
 
 }  // namespace
 
-Snapshot read_snapshot(const std::filesystem::path& path, const std::string& format, std::optional<long> step) {
+Snapshot read_snapshot(const std::filesystem::path& path, const std::string& format, std::optional<long> step,
+                       bool hdf5_in_child) {
+  auto isolated = [&](const std::function<Snapshot()>& read) { return hdf5_in_child ? read_hdf5_isolated(path, read) : read(); };
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) throw InputError("cannot read snapshot " + path.string() + ": no such file");
   std::string fmt = format;
   if (fmt == "auto") fmt = is_hdf5(path) ? "hdf5" : "csv";
   Snapshot s;
   if (fmt == "csv") s = read_csv_snapshot(path);
-  else if (fmt == "swift") s = read_swift_snapshot(path);
-  else if (fmt == "h5part") s = read_h5part_snapshot(path, step);
+  else if (fmt == "swift") s = isolated([&] { return read_swift_snapshot(path); });
+  else if (fmt == "h5part") s = isolated([&] { return read_h5part_snapshot(path, step); });
   else if (fmt == "hdf5") {
-    try {
-      s = read_swift_snapshot(path);
-    } catch (const InputError& swift_error) {
+    s = isolated([&] {
       try {
-        s = read_h5part_snapshot(path, step);
-      } catch (const InputError&) {
-        throw InputError(std::string(swift_error.what()) + " (and no /Step#k groups of H5Part either)");
+        return read_swift_snapshot(path);
+      } catch (const InputError& swift_error) {
+        try {
+          return read_h5part_snapshot(path, step);
+        } catch (const InputError&) {
+          throw InputError(std::string(swift_error.what()) + " (and no /Step#k groups of H5Part either)");
+        }
       }
-    }
+    });
   } else throw InputError("unknown snapshot format '" + format + "' (auto, csv, swift, h5part)");
   check(s);
   return s;

@@ -5,6 +5,7 @@
 // (h5part.cpp). Every reader refuses a bad file with an InputError naming the file.
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -39,13 +40,19 @@ std::string canonical_column(const std::string& file_name);
 // Reads a snapshot; format auto|csv|swift|h5part (auto: HDF5 files by their signature and
 // layout, anything else as CSV); step: the H5Part step (default: the last). Checks that the file
 // has particles, equal-length finite columns and at least the coordinate x.
+// HDF5 files are parsed in a child process (read_hdf5_isolated) unless hdf5_in_child is false
+// (tests that feed thousands of generated files, where a fork costs more than the read).
 Snapshot read_snapshot(const std::filesystem::path& path, const std::string& format = "auto",
-                       std::optional<long> step = std::nullopt);
+                       std::optional<long> step = std::nullopt, bool hdf5_in_child = true);
 // Writes the snapshot's columns (and its time) in the format, atomically.
 void write_snapshot(const Snapshot& s, const std::filesystem::path& path, const std::string& format);
 
 // Path, size in bytes and SHA-256 of a file, for provenance.
 nlohmann::json file_provenance(const std::filesystem::path& path);
+
+// Runs read (an HDF5 reader) in a child process: a file that crashes the HDF5 library becomes an
+// InputError naming it (isolated.cpp).
+Snapshot read_hdf5_isolated(const std::filesystem::path& path, const std::function<Snapshot()>& read);
 
 // The readers and writers of each format (called through the two functions above).
 Snapshot read_csv_snapshot(const std::filesystem::path& path);

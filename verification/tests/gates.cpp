@@ -1,7 +1,6 @@
 // Catch2 gates: every case tagged "gate" runs its quick tier (the CI-sized levels `sphv verify
 // --tier quick` runs, from the case's one declaration) for each variant, and every check and
 // every error's outcome must hold; its smallest level must give the same bits on two threads. Areas with their own test files add finer unit tests.
-#define CATCH_CONFIG_MAIN
 #include <catch2/catch.hpp>
 
 #include <omp.h>
