@@ -1,11 +1,13 @@
 #!/usr/bin/env bash
-# Configures and builds sphv (Release) in build/. Used by both README commands.
+# Configures and builds sphv (Release) in build/ (SPHV_BUILD_DIR overrides). Used by both README
+# commands; the tests build in build-tests/ (scripts/test.sh).
 # SPHV_BUILD_TYPE and SPHV_ARCH (a -march= value, e.g. x86-64-v3) override the defaults;
 # SPHV_WERROR=ON (set by scripts/test.sh, i.e. CI) turns compiler warnings into errors;
 # SPHV_SANITIZER_TESTS=ON (also set by scripts/test.sh) adds the sanitizer tests (CMakeLists.txt).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
-cmake -S . -B build -DCMAKE_BUILD_TYPE="${SPHV_BUILD_TYPE:-Release}" -DSPHV_ARCH="${SPHV_ARCH:-}" ${SPHV_WERROR:+-DSPHV_WERROR="$SPHV_WERROR"} \
-      -DSPHV_SANITIZER_TESTS="${SPHV_SANITIZER_TESTS:-OFF}" >/dev/null
-cmake --build build -j "$(nproc)"
+dir=${SPHV_BUILD_DIR:-build}
+cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE="${SPHV_BUILD_TYPE:-Release}" -DSPHV_ARCH="${SPHV_ARCH:-}" ${SPHV_WERROR:+-DSPHV_WERROR="$SPHV_WERROR"} \
+      ${SPHV_RELEASE_FLAGS:+-DCMAKE_CXX_FLAGS_RELEASE="$SPHV_RELEASE_FLAGS"} -DSPHV_SANITIZER_TESTS="${SPHV_SANITIZER_TESTS:-OFF}" >/dev/null
+cmake --build "$dir" -j "$(nproc)"
