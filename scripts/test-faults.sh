@@ -10,11 +10,11 @@ fail() { echo "FAIL: $*"; cat "$dir/out.txt" "$dir/err.txt" 2>/dev/null; exit 1;
 rm -rf "$dir"; mkdir -p "$dir"
 cases=kernel,interpolation
 t0=$(date +%s)
-SPHV_TEST_FAULT=crash:interpolation@32,hang:kernel@64 "$sphv" verify --tier quick --cases $cases --timeout 30 \
+SPHV_TEST_FAULT=crash:interpolation@32,hang:kernel@64 "$sphv" verify --tier quick --cases $cases --timeout 8 \
   --out "$dir/v" > "$dir/out.txt" 2> "$dir/err.txt"
 status=$?
 [ "$status" -eq 1 ] || fail "verify exited $status, expected 1"
-grep -q '"verdict": "timeout after 30 s"' "$dir/v/kernel/n64/result.json" || fail "no timeout verdict for kernel n=64"
+grep -q '"verdict": "timeout after 8 s"' "$dir/v/kernel/n64/result.json" || fail "no timeout verdict for kernel n=64"
 grep -q '"verdict": "crashed: signal 9' "$dir/v/interpolation/default/n32/result.json" || fail "no crash verdict for interpolation n=32"
 grep -q '"verdict": "ok"' "$dir/v/kernel/n128/result.json" || fail "kernel n=128 did not finish after the hang"
 grep -q '"verdict": "ok"' "$dir/v/interpolation/default/n64/result.json" || fail "interpolation n=64 did not finish after the crash"

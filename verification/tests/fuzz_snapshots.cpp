@@ -33,8 +33,8 @@ constexpr std::size_t wanted = 10000;  // malformed files refused per reader (is
 #ifdef SPHV_SANITIZED
 // Under AddressSanitizer each HDF5 file open costs ~10 ms (the library callocs its multi-MB
 // metadata cache, which the sanitizer maps and unmaps; measured 155 s for 10,000 SWIFT files):
-// the sanitizer tests feed 2,000 per HDF5 reader, the release tests 10,000.
-constexpr std::size_t wanted_hdf5 = 2000;
+// the sanitizer tests feed 1,000 per HDF5 reader, the release tests 10,000.
+constexpr std::size_t wanted_hdf5 = 1000;
 #else
 constexpr std::size_t wanted_hdf5 = wanted;
 #endif
@@ -292,14 +292,14 @@ void fuzz_reader(const std::string& format, std::uint64_t offset, Make make) {
   fs::remove_all(dir);
 }
 
-// One HDF5 file in 64 has damaged bytes and is read in a child process like every snapshot a user
+// One HDF5 file in 256 has damaged bytes and is read in a child process like every snapshot a user
 // gives (a fork costs 1-10 ms on a loaded machine, about a second for a sanitized process: the
 // sanitizer tests read structural faults only); the others are malformed in structure.
 template <class Structure>
 Reading hdf5_input(const fs::path& f, fuzz::Inputs& gen, const std::string& good, const std::string& format, Structure structure) {
   Reading r;
 #ifndef SPHV_SANITIZED
-  r.in_child = gen.below(64) == 0;
+  r.in_child = gen.below(256) == 0;
 #endif
   if (r.in_child) write_bytes(f, damaged(good, gen));
   else structure(f, gen);
