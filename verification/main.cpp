@@ -8,6 +8,8 @@
 #include <optional>
 #include <cstdio>
 #include <filesystem>
+#include <new>
+#include <stdexcept>
 #include <iostream>
 #include <set>
 #include <thread>
@@ -338,6 +340,12 @@ int run_main(int argc, char** argv) {
     return 2;
   } catch (const InputError& e) {
     if (root) error_line(e.what());
+    return 2;
+  } catch (const std::bad_alloc&) {  // e.g. n = 10^7 in 3D: the input asks for more than memory holds
+    if (root) error_line("not enough memory for these parameters (choose a smaller n)");
+    return 2;
+  } catch (const std::length_error&) {
+    if (root) error_line("not enough memory for these parameters (choose a smaller n)");
     return 2;
   } catch (const std::exception& e) {  // e.g. an output path that cannot be written
     if (root) error_line(e.what());

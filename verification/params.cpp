@@ -82,6 +82,8 @@ void Params::set(const std::string& key, const std::string& value) {
     }
   }
   if (s.kind != ParamSpec::Kind::Text) {
+    if (key == "n" && number > max_resolution)
+      throw InputError("parameter n must be <= " + std::to_string(max_resolution) + ", got " + value);
     if (s.greater_than && !(number > *s.greater_than))
       throw InputError("parameter " + key + " must be > " + shortest(*s.greater_than) + ", got " + value);
     if (s.at_least && !(number >= *s.at_least))
@@ -145,6 +147,8 @@ std::vector<long> parse_levels(const std::string& text) {
     if (!parse_number(item, n))
       throw InputError("--levels '" + text + "': '" + item + "' is not an integer (expected e.g. 16,32,64)");
     if (n <= 0) throw InputError("--levels '" + text + "': n must be > 0, got " + item);
+    if (n > max_resolution)
+      throw InputError("--levels '" + text + "': n must be <= " + std::to_string(max_resolution) + ", got " + item);
     levels.push_back(n);
     if (comma == std::string::npos) return levels;
     start = comma + 1;

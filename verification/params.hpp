@@ -30,6 +30,10 @@ struct ParamSpec {
 // The shortest text that reads back as exactly v (std::to_chars): 5.0/3 is "1.6666666666666667".
 std::string shortest(double v);
 
+// The largest resolution n any case accepts: beyond it particle counts overflow the integers
+// the cases index with (n^3 in 3D) or no machine's memory holds them.
+constexpr long max_resolution = 10'000'000;
+
 ParamSpec integer_param(std::string name, long def, std::string help, std::optional<double> gt = 0.0);
 ParamSpec real_param(std::string name, double def, std::string help, std::optional<double> gt = std::nullopt);
 ParamSpec choice_param(std::string name, std::string def, std::string help, std::vector<std::string> choices);
