@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 #include "sph/density.hpp"
 #include "sph/grid_search.hpp"
@@ -22,6 +23,7 @@ struct SmoothingLengthControl {
   double h_max = std::numeric_limits<double>::infinity();
   double tol = 1e-3;   // relative change of h that ends the iteration
   int max_iterations = 30;
+  double skin = 0.1;   // the search pads every support radius by this fraction (reused while h fits)
 };
 
 struct SmoothingLengthOutcome {
@@ -32,12 +34,31 @@ struct SmoothingLengthOutcome {
 };
 
 // Sets h from (50) and rho from (27) consistently (to tol); rho is the summation density of the
-// returned h. Throws std::invalid_argument from the search if h exceeds half a periodic box.
+// returned h. One neighbour search serves the whole iteration: it lists the pairs within support
+// radii padded by `skin` and is redone only when some h outgrows its padded radius. A listed pair
+// beyond h_ij adds W = 0 exactly, so every density is the sum over the same interacting pairs.
+// Throws std::invalid_argument from the search if h exceeds half a periodic box.
 template <int D>
 SmoothingLengthOutcome smoothing_length_iterate(Particles<D>& p, const Box<D>& box, const SmoothingLengthControl& c) {
   SmoothingLengthOutcome out;
+  std::vector<double> reach;
+  NeighbourList nl;
+  auto density = [&] {
+    bool covered = reach.size() == p.size();
+    for (std::size_t i = 0; covered && i < p.size(); ++i) covered = p.h[i] <= reach[i];
+    if (!covered) {
+      reach = p.h;
+      double widest = 0.0;
+      for (double& r : reach) r *= 1.0 + c.skin, widest = std::max(widest, r);
+      const Vec<D> L = box.length();
+      for (int d = 0; d < D; ++d)  // the padding must not trip the search's half-box limit
+        if (box.periodic[d] && widest > 0.5 * L[d]) reach = p.h;
+      nl = grid_search<D>(p.x, reach, box);
+    }
+    density_summation(p, nl, box);
+  };
   for (out.iterations = 1; out.iterations <= c.max_iterations; ++out.iterations) {
-    density_summation(p, grid_search<D>(p.x, p.h, box), box);
+    density();
     out.change = 0.0;
     out.at_cap = 0;
     for (std::size_t i = 0; i < p.size(); ++i) {
@@ -52,7 +73,7 @@ SmoothingLengthOutcome smoothing_length_iterate(Particles<D>& p, const Box<D>& b
     }
   }
   out.iterations = std::min(out.iterations, c.max_iterations);
-  density_summation(p, grid_search<D>(p.x, p.h, box), box);
+  density();
   return out;
 }
 
