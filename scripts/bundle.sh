@@ -39,7 +39,7 @@ fi
 
 python=$(bash scripts/find-python.sh) || exit 1
 if [ -z "$results" ]; then
-  bash scripts/build.sh || exit 1
+  bash scripts/build.sh sphv || exit 1
   results=runs/bundle-$tier
   ./build/sphv verify --tier "$tier" --out "$results"  # exit 1 on a failed gate: the bundle shows it
   [ -f "$results/summary.json" ] || die "sphv verify wrote no $results/summary.json"

@@ -5,7 +5,7 @@
 # report is written either way.
 set -uo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/build.sh || exit 1
+bash scripts/build.sh sphv || exit 1
 python=$(bash scripts/find-python.sh) || exit 1
 rm -rf runs/verify.new
 ./build/sphv verify --tier standard --out runs/verify.new "$@"
