@@ -3,6 +3,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <stdexcept>
 #include <vector>
 
@@ -16,12 +17,17 @@ namespace sph {
 
 // Linked-cell grid search of section 9.4.3. Pairs are kept when |r_ij| < max(h_i, h_j)
 // (errata: symmetric interactions with variable h). Cost O(N) for bounded density contrast
-// (errata). Cells are half the largest support radius wide and a particle searches the 5^D
-// cells around its own (fewer candidates than 3^D cells of width h). The chapter's linked list
-// is stored as a counting sort, so each cell's positions lie contiguously; a periodic image is
-// a shift per stencil cell, so the distance test needs no rounding. Each particle's list is in
-// a fixed order (by stencil cell, then by index): results do not depend on the thread count.
-// The cell order of the particles is returned as the list's visiting order.
+// (errata). With nearly uniform h, cells are half the largest support radius wide and every
+// particle searches the 5^D cells around its own. When a few particles are far wider than the
+// rest (the hot, rarefied centre of a blast wave), cells follow the bulk's h instead (below), so
+// the wide ones do not widen everyone's stencil: i searches the cells within its own h_i and keeps
+// j when |r_ij| < h_i, and a pair with h_j <= |r_ij| < h_i, which j's own search misses, is then
+// added to j's list. The chapter's linked list is stored as a counting sort, so each cell's
+// positions lie contiguously; a periodic image is a shift per stencil cell, so the distance test
+// needs no rounding, and the separation is computed as (x_i - x_j) - shift, the exact negative of
+// j's, so both ends of a pair agree on it. Each particle's list is in a fixed order (its own finds
+// by stencil cell, then by index; then any added ones in visiting order): results do not depend
+// on the thread count. The cell order of the particles is returned as the list's visiting order.
 template <int D>
 NeighbourList grid_search(const std::vector<Vec<D>>& x, const std::vector<double>& h, const Box<D>& box) {
   const std::size_t n = x.size();
@@ -45,9 +51,35 @@ NeighbourList grid_search(const std::vector<Vec<D>>& x, const std::vector<double
     lo[d] = a;
     ext[d] = std::max(b - a, hmax);
   }
-  // Cells of width >= hmax/2, widened so that there are at most ~2N cells (a clustered set in
-  // a large open box would otherwise ask for far more cells than particles).
+  // Cells of width >= h_c/2. h_c = h_max when h is nearly uniform (h_max < 1.5 h_median); else
+  // the one among h_max and quantiles of h that minimises the volume searched,
+  // sum_i ((2 ceil(h_i / (h_c/2)) + 1) h_c/2)^D: the bulk's h when a few particles are far wider.
   double width = 0.5 * hmax;
+  {
+    std::vector<double> hq;  // the positive finite h (a NaN would break the ordering)
+    hq.reserve(n);
+    for (double hi : h)
+      if (hi > 0.0 && hi <= hmax) hq.push_back(hi);
+    auto quantile = [&](double q) {
+      const auto at = hq.begin() + static_cast<std::ptrdiff_t>(q * static_cast<double>(hq.size() - 1));
+      std::nth_element(hq.begin(), at, hq.end());
+      return *at;
+    };
+    if (!hq.empty() && hmax >= 1.5 * quantile(0.5)) {
+      double least = std::numeric_limits<double>::infinity();
+      for (double q : {1.0, 0.99, 0.9, 0.5}) {
+        const double c = 0.5 * quantile(q);
+        double volume = 0.0;
+        for (double hi : hq) {
+          const double side = (2.0 * std::max(1.0, std::ceil(hi / c - 1e-12)) + 1.0) * c;
+          double v = side;
+          for (int d = 1; d < D; ++d) v *= side;
+          volume += v;
+        }
+        if (volume < least) least = volume, width = c;
+      }
+    }
+  }
   auto cells_along = [&](int d) { return std::max(1, static_cast<int>(std::min(ext[d] / width, 1e6))); };
   for (;;) {
     double total = 1.0;
@@ -56,13 +88,15 @@ NeighbourList grid_search(const std::vector<Vec<D>>& x, const std::vector<double
     width *= 1.26;
   }
   std::array<int, D> nc;
-  int reach = 1;  // stencil half-width in cells
+  double cell = 0.0;  // the narrowest cell side
   std::int64_t ncell = 1;
   for (int d = 0; d < D; ++d) {
     nc[d] = cells_along(d);
-    reach = std::max(reach, static_cast<int>(std::ceil(hmax / (ext[d] / nc[d]) - 1e-12)));
+    cell = d == 0 ? ext[0] / nc[0] : std::min(cell, ext[d] / nc[d]);
     ncell *= nc[d];
   }
+  // Stencil half-width in cells for a support radius hv (NaN or h <= 0: the own cell's neighbours).
+  auto reach_of = [&](double hv) { return hv > 0.0 ? std::max(1, static_cast<int>(std::ceil(hv / cell - 1e-12))) : 1; };
   auto flat = [&](const std::array<int, D>& c) {
     std::int64_t k = 0;
     for (int d = D - 1; d >= 0; --d) k = k * nc[d] + c[d];
@@ -103,7 +137,7 @@ NeighbourList grid_search(const std::vector<Vec<D>>& x, const std::vector<double
     std::int64_t first, last;  // particle range [first, last) in sorted order
     Vec<D> shift;
   };
-  auto stencil = [&](const std::array<int, D>& c, std::vector<Run>& out) {
+  auto stencil = [&](const std::array<int, D>& c, int reach, std::vector<Run>& out) {
     out.clear();
     std::array<int, D> o;
     o.fill(-reach);
@@ -144,50 +178,83 @@ NeighbourList grid_search(const std::vector<Vec<D>>& x, const std::vector<double
     }
   };
 
-  // One pass over the particles in cell order (each cell's stencil built once): each thread
-  // fills the lists of a contiguous range into its own buffer; the lists are then copied into
-  // particle order. Candidates are appended without a branch: each is written, and the end of
-  // the list advances only if it is kept (a kept/rejected test mispredicts about a third of the time).
+  // One pass over the particles in cell order (a stencil built once per cell and reach): each
+  // thread fills the lists of a contiguous range into its own buffer. Nearly uniform h (cells of
+  // h_max/2): every particle searches h_max and keeps |r_ij| < max(h_i, h_j). Wide h: i searches
+  // its own h_i, keeps |r_ij| < h_i and notes the pairs the other end misses as (j, i) in visiting
+  // order (h_j <= |r_ij| < h_i). Candidates are appended without a branch: each is written, and
+  // the end of the list advances only if it is kept (a kept/rejected test mispredicts about a
+  // third of the time).
   std::vector<std::vector<int>> parts;
+  std::vector<std::vector<std::array<int, 2>>> missed;
   std::vector<int> owner(n);
   std::vector<std::size_t> local(n);
 #pragma omp parallel if (n >= parallel_threshold)
   {
     const int nt = omp_get_num_threads(), t = omp_get_thread_num();
 #pragma omp single
-    parts.resize(nt);
+    parts.resize(nt), missed.resize(nt);
     const std::size_t first = n * t / nt, last = n * (t + 1) / nt;
     std::vector<int>& js = parts[t];
+    std::vector<std::array<int, 2>>& mt = missed[t];
     js.resize((last - first) * 64);
-    std::size_t used = 0;
+    std::size_t used = 0, nm = 0;
     std::vector<Run> sten;
     std::int64_t sten_of = -1;
-    for (std::size_t s = first; s < last; ++s) {
-      const std::size_t i = sorted[s];
-      if (cell_of[i] != sten_of) stencil(coord[i], sten), sten_of = cell_of[i];
-      owner[i] = t;
-      local[i] = used;
-      const double hi = hs[s];
-      for (const Run& run : sten) {
-        const Vec<D> xi = xs[s] - run.shift;
-        if (used + (run.last - run.first) > js.size()) js.resize(2 * js.size() + (run.last - run.first));
-        int* out = js.data() + used;
-        for (std::int64_t k = run.first; k < run.last; ++k) {
-          const double rs = std::max(hi, hs[k]);
-          *out = sorted[k];
-          out += ((xi - xs[k]).squaredNorm() < rs * rs) & (k != static_cast<std::int64_t>(s));
+    int sten_reach = 0;
+    auto scan = [&](auto wide) {  // a compile-time choice: no test of the mode per candidate
+      for (std::size_t s = first; s < last; ++s) {
+        const std::size_t i = sorted[s];
+        const double hi = hs[s];
+        const int reach = reach_of(wide ? hi : hmax);
+        if (cell_of[i] != sten_of || reach != sten_reach) stencil(coord[i], reach, sten), sten_of = cell_of[i], sten_reach = reach;
+        owner[i] = t;
+        local[i] = used;
+        for (const Run& run : sten) {
+          const std::size_t cand = run.last - run.first;
+          if (used + cand > js.size()) js.resize(2 * js.size() + cand);
+          if (wide && nm + cand > mt.size()) mt.resize(2 * mt.size() + cand);
+          int* out = js.data() + used;
+          std::array<int, 2>* miss = mt.data() + nm;
+          for (std::int64_t k = run.first; k < run.last; ++k) {
+            const double r2 = (xs[s] - xs[k] - run.shift).squaredNorm();
+            const double rs = wide ? hi : std::max(hi, hs[k]);
+            const bool kept = (r2 < rs * rs) & (k != static_cast<std::int64_t>(s));
+            *out = sorted[k];
+            out += kept;
+            if constexpr (wide) {
+              *miss = {sorted[k], static_cast<int>(i)};
+              miss += kept & !(r2 < hs[k] * hs[k]);
+            }
+          }
+          used = out - js.data();
+          nm = miss - mt.data();
         }
-        used = out - js.data();
+        nl.offset[i + 1] = used - local[i];
       }
-      nl.offset[i + 1] = used - local[i];
-    }
+    };
+    if (width < 0.5 * hmax) scan(std::true_type{});
+    else scan(std::false_type{});
+    mt.resize(nm);
   }
-  for (std::size_t i = 0; i < n; ++i) nl.offset[i + 1] += nl.offset[i];
+  // The missed pairs, counted per receiving particle in visiting order (threads' ranges in order).
+  std::vector<std::size_t> extra(n + 1, 0);
+  for (const auto& mt : missed)
+    for (const auto& jm : mt) ++extra[jm[0] + 1];
+  for (std::size_t i = 0; i < n; ++i) extra[i + 1] += extra[i];
+  for (std::size_t i = 0; i < n; ++i) nl.offset[i + 1] += nl.offset[i] + (extra[i + 1] - extra[i]);
   nl.j.resize(nl.offset[n]);
-  nl.order = std::move(sorted);
+  {
+    std::vector<std::size_t> fill(n);
+    for (std::size_t i = 0; i < n; ++i) fill[i] = nl.offset[i + 1] - (extra[i + 1] - extra[i]);
+    for (const auto& mt : missed)
+      for (const auto& jm : mt) nl.j[fill[jm[0]]++] = jm[1];
+  }
 #pragma omp parallel for schedule(static) if (n >= parallel_threshold)
   for (std::size_t i = 0; i < n; ++i)
-    std::copy_n(parts[owner[i]].begin() + local[i], nl.offset[i + 1] - nl.offset[i], nl.j.begin() + nl.offset[i]);
+    std::copy_n(parts[owner[i]].begin() + local[i], nl.offset[i + 1] - nl.offset[i] - (extra[i + 1] - extra[i]),
+                nl.j.begin() + nl.offset[i]);
+  nl.order = std::move(sorted);
   return nl;
 }
 
