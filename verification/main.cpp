@@ -341,15 +341,12 @@ int run_main(int argc, char** argv) {
   } catch (const InputError& e) {
     if (root) error_line(e.what());
     return 2;
-  } catch (const std::bad_alloc&) {  // e.g. n = 10^7 in 3D: the input asks for more than memory holds
-    if (root) error_line("not enough memory for these parameters (choose a smaller n)");
-    return 2;
-  } catch (const std::length_error&) {
-    if (root) error_line("not enough memory for these parameters (choose a smaller n)");
-    return 2;
-  } catch (const std::exception& e) {  // e.g. an output path that cannot be written
-    if (root) error_line(e.what());
-    return 3;
+  } catch (const std::exception& e) {
+    // Allocation failure (e.g. n = 10^7 in 3D asks for more than memory holds) is bad input;
+    // anything else here is I/O (e.g. an output path that cannot be written).
+    const bool memory = dynamic_cast<const std::bad_alloc*>(&e) || dynamic_cast<const std::length_error*>(&e);
+    if (root) error_line(memory ? "not enough memory for these parameters (choose a smaller n)" : e.what());
+    return memory ? 2 : 3;
   }
   return 0;
 }

@@ -7,7 +7,6 @@
 # H5Part snapshots 1,000 each, malformed in structure, read and then scored by sod, sedov, noh,
 # heat, gravity and evrard) and the result and non-finite tests. Not instrumented here: the
 # physics (sph/, cases) and the sweep code; scripts/test-sanitizers.sh instruments everything.
-set(_asan -fsanitize=address,undefined,float-cast-overflow -fno-sanitize-recover=all -fno-omit-frame-pointer)
 sphv_harness_library(harness_input_sanitized ${INPUT_SOURCES})
 set(_tests fuzz fuzz_snapshots reliability)
 list(TRANSFORM _tests PREPEND ${CMAKE_SOURCE_DIR}/verification/tests/)
@@ -17,8 +16,8 @@ add_executable(sphv_sanitized_tests ${_tests} verification/tests/sanitizer/optio
 target_link_libraries(sphv_sanitized_tests PRIVATE harness_input_sanitized catch_main)
 target_compile_definitions(sphv_sanitized_tests PRIVATE SPHV_SOURCE_DIR="${CMAKE_SOURCE_DIR}" SPHV_EXE="$<TARGET_FILE:sphv>" SPHV_SANITIZED)
 foreach(_target harness_input_sanitized sphv_sanitized_tests)
-  target_compile_options(${_target} PRIVATE ${SPHV_WARNINGS} ${_asan} -O0 -g1)
-  target_link_options(${_target} PRIVATE ${_asan})
+  target_compile_options(${_target} PRIVATE ${SPHV_WARNINGS} ${SPHV_SANITIZER_FLAGS} -O0 -g1)
+  target_link_options(${_target} PRIVATE ${SPHV_SANITIZER_FLAGS})
 endforeach()
 # Runtime options: compiled in (verification/tests/sanitizer/options.cpp).
 catch_discover_tests(sphv_sanitized_tests TEST_PREFIX "sanitized: " TEST_SPEC "[fuzz]~[cli],[result],[params]")

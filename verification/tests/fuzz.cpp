@@ -81,11 +81,6 @@ struct Ran {
   std::string out, err;
 };
 
-std::string slurp(const fs::path& f) {
-  std::ifstream in(f, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), {}};
-}
-
 // Runs sphv with args (stdout, stderr to files in dir); killed after timeout_s.
 Ran run_sphv(const std::vector<std::string>& args, const fs::path& dir, double timeout_s) {
   std::vector<std::string> a = {SPHV_EXE, "--threads", "1"};
@@ -116,8 +111,8 @@ Ran run_sphv(const std::vector<std::string>& args, const fs::path& dir, double t
   }
   r.exited = WIFEXITED(status);
   r.status = r.exited ? WEXITSTATUS(status) : -1;
-  r.out = slurp(out);
-  r.err = slurp(err);
+  r.out = sphv::fuzz::slurp(out);
+  r.err = sphv::fuzz::slurp(err);
   return r;
 }
 

@@ -3,11 +3,20 @@
 // lists, input files). The same seed gives the same sequence on the same standard library, so a
 // failing input is replayed from the seed and index the test prints.
 #include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <random>
 #include <string>
 #include <vector>
 
 namespace sphv::fuzz {
+
+// The whole content of file f (empty if it cannot be read): what a run wrote, or a valid file to mutate.
+inline std::string slurp(const std::filesystem::path& f) {
+  std::ifstream in(f, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
 
 class Inputs {
  public:

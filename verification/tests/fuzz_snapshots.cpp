@@ -47,11 +47,6 @@ fs::path scratch_dir() {
   return d;
 }
 
-std::string slurp(const fs::path& f) {
-  std::ifstream in(f, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), {}};
-}
-
 void write_bytes(const fs::path& f, const std::string& bytes) {
   std::ofstream out(f, std::ios::binary | std::ios::trunc);
   out << bytes;
@@ -311,7 +306,7 @@ Reading hdf5_input(const fs::path& f, fuzz::Inputs& gen, const std::string& good
 
 TEST_CASE("fuzz: 10,000+ malformed CSV snapshots are refused or read soundly", "[fuzz][snapshot]") {
   write_csv_snapshot(valid(12), scratch_dir() / "valid.csv");
-  const std::string text = slurp(scratch_dir() / "valid.csv");
+  const std::string text = fuzz::slurp(scratch_dir() / "valid.csv");
   fuzz_reader("csv", 10, [&](const fs::path& f, fuzz::Inputs& gen) {
     write_bytes(f, gen.mutate(text));
     return Reading{gen.below(2) ? "csv" : "auto", std::nullopt};
@@ -320,13 +315,13 @@ TEST_CASE("fuzz: 10,000+ malformed CSV snapshots are refused or read soundly", "
 
 TEST_CASE("fuzz: 10,000+ malformed SWIFT/GADGET HDF5 snapshots are refused or read soundly", "[fuzz][snapshot]") {
   write_swift_snapshot(valid(12), scratch_dir() / "valid.h5");
-  const std::string good = slurp(scratch_dir() / "valid.h5");
+  const std::string good = fuzz::slurp(scratch_dir() / "valid.h5");
   fuzz_reader("swift", 11, [&](const fs::path& f, fuzz::Inputs& gen) { return hdf5_input(f, gen, good, "swift", swift_file); });
 }
 
 TEST_CASE("fuzz: 10,000+ malformed H5Part snapshots are refused or read soundly", "[fuzz][snapshot]") {
   write_h5part_snapshot(valid(12), scratch_dir() / "valid.h5part");
-  const std::string good = slurp(scratch_dir() / "valid.h5part");
+  const std::string good = fuzz::slurp(scratch_dir() / "valid.h5part");
   fuzz_reader("h5part", 12, [&](const fs::path& f, fuzz::Inputs& gen) {
     Reading r = hdf5_input(f, gen, good, "h5part", h5part_file);
     if (gen.below(3) == 0) r.step = long(gen.below(4)) - 1;
