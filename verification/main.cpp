@@ -15,6 +15,7 @@
 #include <thread>
 #include <unistd.h>
 
+#include "verification/allocator.hpp"
 #include "verification/case.hpp"
 #include "verification/baseline.hpp"
 #include "verification/bench.hpp"
@@ -352,6 +353,7 @@ int run_main(int argc, char** argv) {
 }
 
 int main(int argc, char** argv) {
+  sphv::keep_freed_memory();
   sphv::mpi::init(&argc, &argv);
   const int status = run_main(argc, argv);
   sphv::mpi::finalize();
