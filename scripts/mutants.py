@@ -40,7 +40,7 @@ VERIFYING_TESTS = re.compile(
     r"riemann solver reproduces|Sod wave speeds|sedov reference|noh reference|direct sum|brute force|"
     r"moments add up|point-mass term|cvode driver|equations of state|conserve momentum and energy|"
     r"second order in dt|evrard reference: energy conservation|tree search returns the grid search|"
-    r"sedov density L1 converges", re.I)
+    r"sedov density L1 converges|reduces to|evolve ends at t_end", re.I)
 
 
 def log(msg):
@@ -115,9 +115,10 @@ class Scratch:
         return subprocess.run(cmd + (["-R"] if reverse else []), cwd=self.src, capture_output=True, text=True)
 
     def configure(self, logf):
-        if (self.build / "CMakeCache.txt").exists():
-            return 0
-        return run(["cmake", "-S", str(self.src), "-B", str(self.build), "-DCMAKE_BUILD_TYPE=Release"], log_path=logf)[0]
+        # The flags of the test command's build (scripts/test.sh): a fifth less compile time than
+        # -O3, the same results (no fast-math, and no FMA at the default instruction set).
+        return run(["cmake", "-S", str(self.src), "-B", str(self.build), "-DCMAKE_BUILD_TYPE=Release",
+                    "-DCMAKE_CXX_FLAGS_RELEASE=-O2 -DNDEBUG"], log_path=logf)[0]
 
     def make(self, jobs, logf):
         return run(["cmake", "--build", str(self.build), "-j", str(jobs), "--target", "sphv", "sphv_tests"],
