@@ -28,8 +28,10 @@ namespace sph {
 // j's, so both ends of a pair agree on it. Each particle's list is in a fixed order (its own finds
 // by stencil cell, then by index; then any added ones in visiting order): results do not depend
 // on the thread count. The cell order of the particles is returned as the list's visiting order.
+// [[gnu::flatten]]: every callee inlined at -O2 too (the tests' build), where GCC otherwise keeps
+// calls in the candidate loop: measured 0.040 s -> 0.021 s per search of 3e4 particles (-O3 0.019 s).
 template <int D>
-NeighbourList grid_search(const std::vector<Vec<D>>& x, const std::vector<double>& h, const Box<D>& box) {
+[[gnu::flatten]] NeighbourList grid_search(const std::vector<Vec<D>>& x, const std::vector<double>& h, const Box<D>& box) {
   const std::size_t n = x.size();
   NeighbourList nl;
   nl.offset.assign(n + 1, 0);
