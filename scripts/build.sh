@@ -9,6 +9,10 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 dir=${SPHV_BUILD_DIR:-build}
-cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE="${SPHV_BUILD_TYPE:-Release}" -DSPHV_ARCH="${SPHV_ARCH:-}" ${SPHV_WERROR:+-DSPHV_WERROR="$SPHV_WERROR"} \
+# Ninja for a new build folder (it keeps both cores busy across targets); an existing folder
+# keeps the generator it was configured with.
+generator=()
+if [ ! -f "$dir/CMakeCache.txt" ] && command -v ninja >/dev/null; then generator=(-G Ninja); fi
+cmake "${generator[@]}" -S . -B "$dir" -DCMAKE_BUILD_TYPE="${SPHV_BUILD_TYPE:-Release}" -DSPHV_ARCH="${SPHV_ARCH:-}" ${SPHV_WERROR:+-DSPHV_WERROR="$SPHV_WERROR"} \
       ${SPHV_RELEASE_FLAGS:+-DCMAKE_CXX_FLAGS_RELEASE="$SPHV_RELEASE_FLAGS"} -DSPHV_SANITIZER_TESTS="${SPHV_SANITIZER_TESTS:-OFF}" >/dev/null
 cmake --build "$dir" -j "$(nproc)" ${1:+--target "$@"}

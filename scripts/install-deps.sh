@@ -2,7 +2,7 @@
 # Installs the Debian packages sphv needs, when any is missing: directly as root, through
 # sudo when that works without a password, otherwise prints the exact apt-get line and fails.
 set -euo pipefail
-packages=(g++ cmake make git libeigen3-dev libgsl-dev libsundials-dev catch2 nlohmann-json3-dev
+packages=(g++ cmake make ninja-build git libeigen3-dev libgsl-dev libsundials-dev catch2 nlohmann-json3-dev
           libcli11-dev libhdf5-dev libssl-dev libopenmpi-dev openmpi-bin python3-matplotlib python3-numpy)
 missing=()
 for p in "${packages[@]}"; do

@@ -43,6 +43,17 @@ inline std::string partner_energy(const std::string& euler) {
   throw std::invalid_argument("unknown Euler form " + euler);
 }
 
+// The energy term the chapter pairs with an Euler term, as a type: (22)-(37), (23)-(41), (25)-its
+// own symmetric form with the same lambda, (26)-(42).
+template <int D>
+EnergyAsymmetric<D, EnergyForm::direct37> partner_energy_term(const EulerDirect<D>&) {
+  return {};
+}
+template <int D, class Lambda>
+EnergySymmetric<D, Lambda> partner_energy_term(const EulerSymmetric<D, Lambda>& e) {
+  return {e.lambda};
+}
+
 // Calls f(euler, energy) with the terms of both named forms: one instantiation per pairing.
 template <int D, class F>
 auto with_hydro_forms(const std::string& euler, const std::string& energy, double lambda, F&& f) {

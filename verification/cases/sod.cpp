@@ -6,6 +6,7 @@
 #include <cmath>
 #include <map>
 
+#include "sph/hydro_forms.hpp"
 #include "verification/case.hpp"
 #include "verification/cases/hydro_step_params.hpp"
 #include "verification/cases/sod_errors.hpp"
@@ -289,7 +290,13 @@ Case make_case(int dim) {
   c.orders = [dim](const Params& p) { return first_order(p, dim); };
   c.error_defs = tube_error_defs;
   c.expects_unstable = [](const Params& p) { return p.text("timestep") == "chapter"; };
-  c.validate = [](const Params& p) { problem(p); };
+  c.validate = [dim](const Params& p) {
+    problem(p);
+    const std::string euler = p.text("euler"), energy = p.text("energy");
+    if (dim > 1 && energy != "auto" && energy != sph::partner_energy(euler))
+      throw InputError("energy=" + energy + " with euler=" + euler + ": mixed pairings are 1D only (sod); in " +
+                       std::to_string(dim) + "D the energy form is the Euler form's partner (energy=auto)");
+  };
   if (dim == 1) {
     c.levels = {.quick = {200, 400, 800}, .standard = {100, 200, 400, 800, 1600}, .full = {100, 200, 400, 800, 1600}};
     c.variants = {{},
