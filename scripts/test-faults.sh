@@ -2,7 +2,8 @@
 # The catalogue survives a point killed mid-run (SIGKILL) and a point that hangs past --timeout:
 # each becomes that point's verdict, every other point and case finishes, the JUnit XML names the
 # failed checks, and verify exits 1. A second run without the faults reruns only those points.
-# Uses the test-only hook SPHV_TEST_FAULT of `sphv run` (verification/main.cpp).
+# `sphv sweep --timeout` kills a hung point the same way. Uses the test-only hook SPHV_TEST_FAULT
+# of `sphv run` (verification/main.cpp).
 # usage: test-faults.sh SPHV WORKDIR
 set -uo pipefail
 sphv=$1; dir=$2
@@ -32,4 +33,11 @@ grep -rqE '"verdict": "(crashed|timeout)' "$dir/v" --include=result.json && fail
 total=$(find "$dir/v" -name result.json | wc -l)
 faulty=$(( 1 + $(find "$dir/v/interpolation" -path '*/n32/result.json' | wc -l) ))
 grep -q "reusing $(( total - faulty )) finished point(s) of $total" "$dir/err2.txt" || fail "rerun did not reuse the $(( total - faulty )) good points: $(cat "$dir/err2.txt")"
-echo "PASS: timeout and SIGKILL became verdicts, $total points in ${took} s, exit 1; the rerun reran $faulty point(s)"
+# `sphv sweep --timeout` the same way: the hung point's verdict, the other levels finish, exit 1.
+SPHV_TEST_FAULT=hang:kernel@64 "$sphv" sweep kernel --tier quick --timeout 3 --jobs 1 --out "$dir/s" \
+  > "$dir/out3.txt" 2> "$dir/err3.txt"
+status=$?
+[ "$status" -eq 1 ] || fail "sweep exited $status, expected 1: $(cat "$dir/err3.txt")"
+grep -q '"verdict": "timeout after 3 s"' "$dir/s/n64/result.json" || fail "no timeout verdict from sweep for kernel n=64"
+grep -q '"verdict": "ok"' "$dir/s/n128/result.json" || fail "sweep: kernel n=128 did not finish after the hang"
+echo "PASS: timeout and SIGKILL became verdicts, $total points in ${took} s, exit 1; the rerun reran $faulty point(s); sweep --timeout too"

@@ -33,6 +33,10 @@ struct Check {
 enum class Tier { quick, standard, full };
 Tier parse_tier(const std::string& s);  // throws InputError
 const char* to_string(Tier t);
+// Seconds a point of the tier may run before the harness kills it (0: no limit). Margins of
+// 8x and 5.6x on the longest points measured at 10f2482 on 2 cores: quick noh 2D n = 50, 14 s;
+// standard noh 2D n = 100, 107 s. The full tier's points are not bounded.
+double tier_timeout(Tier t);
 
 // The levels (values of n) of a sweep in each tier.
 struct Levels {

@@ -253,6 +253,12 @@ int run_main(int argc, char** argv) {
   opt.jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   sweep->add_option("--jobs", opt.jobs, "points run at once as subprocesses (default: cores)")->check(CLI::PositiveNumber);
   sweep->add_flag("--force", opt.force, "rerun points that already have a result of this code version");
+  const CLI::Validator seconds([](std::string& v) {
+    return CLI::NonNegativeNumber(v).empty() ? std::string() : "'" + v + "' is not a number of seconds >= 0";
+  }, "SECONDS");
+  std::optional<double> timeout;
+  sweep->add_option("--timeout", timeout, "seconds a point may run before it is killed (0: no limit; default: the "
+                    "tier's, quick 120, standard 600, full none; none with --levels)")->check(seconds);
   std::string runner;
   sweep->add_option("--runner", runner, "external code: COMMAND run per level with {n} {ic} {out} {t_end} {threads}; {out} scored");
 
@@ -261,9 +267,8 @@ int run_main(int argc, char** argv) {
   verify_cmd->add_option("--cases", only, "only these cases")->delimiter(',');
   verify_cmd->add_option("--tier", tier_name, "quick (CI-sized, the Catch2 gates) | standard | full (default standard)");
   verify_cmd->add_flag("--force", opt.force, "rerun points that already have a result of this code version");
-  std::optional<double> timeout;
   verify_cmd->add_option("--timeout", timeout, "seconds a point may run before it is killed (0: no limit; default: "
-                         "quick 120, standard 600, full none)")->check(CLI::NonNegativeNumber);
+                         "quick 120, standard 600, full none)")->check(seconds);
   fs::path junit;
   verify_cmd->add_option("--junit", junit, "JUnit XML file, a test case per gate check (default DIR/junit.xml)");
 
@@ -313,6 +318,9 @@ int run_main(int argc, char** argv) {
         return status_of({s});
       }
       if (mpi::size() > 1) opt.jobs = 1;
+      // A point past its time limit is killed and becomes its verdict: that needs a subprocess per point.
+      opt.timeout_s = timeout ? *timeout : levels.empty() ? tier_timeout(tier) : 0.0;
+      opt.isolate = opt.timeout_s > 0.0;
       const auto sweeps = run_sweeps(c, tier, levels, expand_variants(settings, vary),
                                      out.empty() ? fs::path("runs") / (c.name + "-sweep") : out, opt);
       if (!root) return 0;
@@ -330,7 +338,7 @@ int run_main(int argc, char** argv) {
       // A process per point, the cores filled (run_points); under mpirun each rank runs its points in-process.
       opt.isolate = true;
       opt.announce = tier == Tier::full;
-      opt.timeout_s = timeout ? *timeout : tier == Tier::quick ? 120.0 : tier == Tier::standard ? 600.0 : 0.0;
+      opt.timeout_s = timeout ? *timeout : tier_timeout(tier);
       return verify(out.empty() ? fs::path("runs/verify") : out, only, tier, opt, junit);
     }
     if (*baseline_up) return root ? baseline_update(only, {}) : 0;

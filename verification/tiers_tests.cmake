@@ -4,3 +4,4 @@ add_test(NAME verify_survives_crash_and_hang COMMAND bash ${CMAKE_SOURCE_DIR}/sc
 set_tests_properties(verify_survives_crash_and_hang PROPERTIES RUN_SERIAL TRUE)
 sphv_refuses(unknown_tier verify --tier huge --out ${CMAKE_BINARY_DIR}/verify_refused)
 sphv_refuses(negative_timeout verify --tier quick --timeout -1 --out ${CMAKE_BINARY_DIR}/verify_refused)
+sphv_refuses(negative_sweep_timeout sweep kernel --tier quick --timeout -1 --out ${CMAKE_BINARY_DIR}/verify_refused)
