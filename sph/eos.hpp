@@ -27,7 +27,9 @@ template <int D, class Eos>
 struct EquationOfState {
   Eos eos;
   void prepare(Particles<D>& p, const Neighbourhood<D>&) const {
-    for (std::size_t i = 0; i < p.size(); ++i) {
+    const std::size_t n = p.size();
+#pragma omp parallel for if (n >= parallel_threshold)
+    for (std::size_t i = 0; i < n; ++i) {
       p.p[i] = eos.pressure(p.rho[i], p.u[i]);
       p.c[i] = eos.sound_speed(p.rho[i], p.u[i]);
     }

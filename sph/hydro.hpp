@@ -6,7 +6,7 @@
 #include <string>
 #include <type_traits>
 
-#include "sph/grid_search.hpp"
+#include "sph/verlet_list.hpp"
 #include "sph/integrator.hpp"
 #include "sph/timestep.hpp"
 #include "sph/verdict.hpp"
@@ -14,8 +14,10 @@
 
 namespace sph {
 
-// Time evolution of a hydrodynamic scene (9.3): neighbour search with the particles' current
-// support radii (a scene term may evolve them, see hydro_smoothing_length.hpp), the scene's derivatives, an integrator of 9.3.2 and a time-step criterion, with a verdict.
+// Time evolution of a hydrodynamic scene (9.3): neighbour lists for the particles' current
+// support radii (a scene term may evolve them, see hydro_smoothing_length.hpp), reused across
+// steps while they cover them (verlet_list.hpp); the scene's derivatives, an integrator of 9.3.2
+// and a time-step criterion, with a verdict.
 
 enum class IntegratorKind { kdk, chapter };
 
@@ -24,6 +26,7 @@ struct HydroControls {
   TimeStepControl step;
   double t_end = 0.2;
   long max_steps = 1000000;
+  double skin = 0.1;  // neighbour lists padded by this fraction of h, reused while they cover (verlet_list.hpp)
 };
 
 struct HydroOutcome {
@@ -75,9 +78,9 @@ HydroOutcome evolve(Scene<D, Terms...>& scene, Particles<D>& p, const Box<D>& bo
     visc = &scene.template term<ArtificialViscosity<D>>();
   Derivatives<D> d;
   HydroOutcome out;
+  VerletList<D> lists(c.skin);
   auto derivs = [&](Particles<D>& q, Derivatives<D>& dd) {
-    const NeighbourList nl = grid_search<D>(q.x, q.h, box);
-    scene.derivatives(q, Neighbourhood<D>{nl, box}, dd);
+    scene.derivatives(q, Neighbourhood<D>{lists.update(q.x, q.h, box), box}, dd);
     if (hooks.evaluated) hooks.evaluated(q, dd);
   };
   auto bad_state = [&](const std::string& what) {

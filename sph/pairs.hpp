@@ -4,19 +4,16 @@
 
 #include "sph/box.hpp"
 #include "sph/neighbour_list.hpp"
+#include "sph/threads.hpp"
 
 namespace sph {
-
-// Below this many particles a pair loop runs on one thread: forking a team costs more than it
-// saves, and small runs (1D tubes, heat tests) take thousands of steps.
-inline constexpr std::size_t parallel_threshold = 4096;
 
 // Symmetric smoothing length of a pair (errata, 9.4.4): h_ij = (h_i + h_j) / 2.
 inline double h_ij(double hi, double hj) { return 0.5 * (hi + hj); }
 
-// The pair loop: for every particle i (in the list's visiting order) and every listed j,
-// f(acc, i, j, r_ij, |r_ij|, h_ij) with r_ij = r_i - r_j at the nearest image adds
-// pair j's share to acc (a local, so the sum stays in registers and no store inside the loop can
+// The pair loop: for every particle i (in the list's visiting order) and every listed j that
+// interacts with it (|r_ij| < h_ij: W_ij and grad W_ij vanish beyond), f(acc, i, j, r_ij, |r_ij|, h_ij)
+// with r_ij = r_i - r_j at the nearest image adds pair j's share to acc (a local, so the sum stays in registers and no store inside the loop can
 // alias the particle data the next pair reads), then store(i, acc) writes i's outputs once.
 // Each i is handled by one thread and writes only i's outputs, so the result is independent of
 // the thread count.
@@ -33,13 +30,14 @@ void sum_over_pairs(const std::vector<Vec<D>>& x, const std::vector<double>& h, 
     const double hi = h[i];
     for (int j : nl.of(i)) {
       const Vec<D> rij = min_image<D>(xi - x[j], L, wrap);
-      f(acc, i, j, rij, rij.norm(), h_ij(hi, h[j]));
+      const double r = rij.norm(), hij = h_ij(hi, h[j]);
+      if (r < hij) f(acc, i, j, rij, r, hij);
     }
     store(i, acc);
   }
 }
 
-// Calls f(i, j, r_ij, |r_ij|, h_ij) for every interacting pair; f may only write to i's own
+// Calls f(i, j, r_ij, |r_ij|, h_ij) for every interacting pair (|r_ij| < h_ij); f may only write to i's own
 // outputs (the pair loop above without an accumulator).
 template <int D, class F>
 void for_each_pair(const std::vector<Vec<D>>& x, const std::vector<double>& h, const NeighbourList& nl,

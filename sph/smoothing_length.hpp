@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "sph/density.hpp"
-#include "sph/grid_search.hpp"
+#include "sph/verlet_list.hpp"
 
 namespace sph {
 
@@ -34,29 +34,14 @@ struct SmoothingLengthOutcome {
 };
 
 // Sets h from (50) and rho from (27) consistently (to tol); rho is the summation density of the
-// returned h. One neighbour search serves the whole iteration: it lists the pairs within support
-// radii padded by `skin` and is redone only when some h outgrows its padded radius. A listed pair
-// beyond h_ij adds W = 0 exactly, so every density is the sum over the same interacting pairs.
-// Throws std::invalid_argument from the search if h exceeds half a periodic box.
+// returned h. One neighbour search serves the whole iteration while the h fit its padding
+// (verlet_list.hpp: the particles stand still). Throws std::invalid_argument from the search if h
+// exceeds half a periodic box.
 template <int D>
 SmoothingLengthOutcome smoothing_length_iterate(Particles<D>& p, const Box<D>& box, const SmoothingLengthControl& c) {
   SmoothingLengthOutcome out;
-  std::vector<double> reach;
-  NeighbourList nl;
-  auto density = [&] {
-    bool covered = reach.size() == p.size();
-    for (std::size_t i = 0; covered && i < p.size(); ++i) covered = p.h[i] <= reach[i];
-    if (!covered) {
-      reach = p.h;
-      double widest = 0.0;
-      for (double& r : reach) r *= 1.0 + c.skin, widest = std::max(widest, r);
-      const Vec<D> L = box.length();
-      for (int d = 0; d < D; ++d)  // the padding must not trip the search's half-box limit
-        if (box.periodic[d] && widest > 0.5 * L[d]) reach = p.h;
-      nl = grid_search<D>(p.x, reach, box);
-    }
-    density_summation(p, nl, box);
-  };
+  VerletList<D> lists(c.skin);
+  auto density = [&] { density_summation(p, lists.update(p.x, p.h, box), box); };
   for (out.iterations = 1; out.iterations <= c.max_iterations; ++out.iterations) {
     density();
     out.change = 0.0;

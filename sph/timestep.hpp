@@ -31,7 +31,9 @@ template <int D>
 double courant_time_step(const Particles<D>& p, const Derivatives<D>& d, double alpha, double beta,
                          const TimeStepControl& c) {
   double dt = std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0; i < p.size(); ++i) {
+  const std::size_t n = p.size();
+#pragma omp parallel for reduction(min : dt) if (n >= parallel_threshold)
+  for (std::size_t i = 0; i < n; ++i) {
     const double hm = 0.5 * p.h[i], mu = d.mu_max[i];
     const double signal = p.c[i] + p.v[i].norm() + 1.2 * (alpha * p.c[i] + beta * mu);
     if (signal > 0.0) dt = std::min(dt, c.C * hm / signal);

@@ -1,6 +1,7 @@
 // The grid search returns exactly the pairs of a brute-force O(N^2) search at the nearest
 // image, for periodic and open boxes, constant and variable h, a few particles far wider than the
-// rest (cells follow the median h), few cells per axis, and on more threads in the same order.
+// rest (cells follow the median h), few cells per axis, and on more threads in the same order; and
+// lists reused across steps (verlet_list.hpp) still hold every pair.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -9,6 +10,7 @@
 #include <omp.h>
 
 #include "sph/grid_search.hpp"
+#include "sph/verlet_list.hpp"
 
 namespace {
 
@@ -60,5 +62,58 @@ TEST_CASE("grid search equals brute force", "[neighbours]") {
     compare<2>(5000, periodic, 0.01, 0.03, 6, 0.2);  // a few wide particles; above parallel_threshold
     compare<3>(5000, periodic, 0.04, 0.08, 7, 0.45);
     compare<3>(5000, periodic, 0.05, 0.07, 8);  // nearly uniform h: cells of h_max / 2
+  }
+}
+
+namespace {
+
+// Particles in two streams that cross along x (pairs of opposite streams approach at twice the
+// speed, the worst case the skin must cover) while every h grows by the same factor per step.
+// The reused list must hold every pair a brute-force search finds at every step, and must be
+// searched again far less often than every step.
+template <int D>
+void verlet_steps(std::size_t n, bool periodic, double h0, double speed, double growth, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0), uh(0.7 * h0, 1.3 * h0);
+  sph::Box<D> box = sph::unit_box<D>(periodic);
+  std::vector<sph::Vec<D>> x(n), v(n, sph::Vec<D>::Zero());
+  std::vector<double> h(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    for (int d = 0; d < D; ++d) x[i][d] = u(rng);
+    v[i][0] = (i % 2 ? speed : -speed) * h0;
+    h[i] = uh(rng);
+  }
+  const sph::Vec<D> L = box.length(), wrap = box.wrap_factor();
+  sph::VerletList<D> lists(0.1);
+  const int steps = 40;
+  long missing = 0;
+  for (int s = 0; s < steps; ++s) {
+    const sph::NeighbourList& nl = lists.update(x, h, box);
+    for (std::size_t i = 0; i < n; ++i) {
+      std::vector<int> listed(nl.of(i).begin(), nl.of(i).end());
+      std::sort(listed.begin(), listed.end());
+      for (std::size_t j = 0; j < n; ++j) {
+        const double rs = std::max(h[i], h[j]);
+        if (j != i && sph::min_image<D>(x[i] - x[j], L, wrap).squaredNorm() < rs * rs)
+          missing += !std::binary_search(listed.begin(), listed.end(), int(j));
+      }
+    }
+    for (std::size_t i = 0; i < n; ++i) x[i] += v[i], h[i] *= 1.0 + growth;
+  }
+  CHECK(missing == 0);
+  CHECK(lists.searches() > 1);          // the lists were renewed as the particles moved
+  CHECK(lists.searches() < steps / 3);  // and reused in between
+}
+
+}  // namespace
+
+// verlet_list.hpp's reuse conditions (a) (each particle within half its skin) and (b) (2 d_max
+// and h's growth within the skin) against a brute-force search at every step.
+TEST_CASE("reused neighbour lists hold every pair of a brute-force search", "[neighbours]") {
+  for (bool periodic : {true, false}) {
+    verlet_steps<2>(1200, periodic, 0.04, 0.008, 0.0, 11);    // streams at constant h: (a)
+    verlet_steps<3>(1200, periodic, 0.15, 0.008, 0.0, 12);
+    verlet_steps<2>(1200, periodic, 0.04, 0.0, 0.008, 13);    // at rest, h growing: (b)
+    verlet_steps<2>(1200, periodic, 0.04, 0.004, 0.004, 14);  // both: (b) outlasts (a)
   }
 }
