@@ -35,12 +35,13 @@ struct SmoothingLengthOutcome {
 
 // Sets h from (50) and rho from (27) consistently (to tol); rho is the summation density of the
 // returned h. One neighbour search serves the whole iteration while the h fit its padding
-// (verlet_list.hpp: the particles stand still). Throws std::invalid_argument from the search if h
-// exceeds half a periodic box.
+// (verlet_list.hpp: the particles stand still), and `lists`, kept by a caller that iterates after
+// every step, serves the next calls while the particles stay within it. Throws
+// std::invalid_argument from the search if h exceeds half a periodic box.
 template <int D>
-SmoothingLengthOutcome smoothing_length_iterate(Particles<D>& p, const Box<D>& box, const SmoothingLengthControl& c) {
+SmoothingLengthOutcome smoothing_length_iterate(Particles<D>& p, const Box<D>& box, const SmoothingLengthControl& c,
+                                                VerletList<D>& lists) {
   SmoothingLengthOutcome out;
-  VerletList<D> lists(c.skin);
   auto density = [&] { density_summation(p, lists.update(p.x, p.h, box), box); };
   for (out.iterations = 1; out.iterations <= c.max_iterations; ++out.iterations) {
     density();
@@ -60,6 +61,12 @@ SmoothingLengthOutcome smoothing_length_iterate(Particles<D>& p, const Box<D>& b
   out.iterations = std::min(out.iterations, c.max_iterations);
   density();
   return out;
+}
+
+template <int D>
+SmoothingLengthOutcome smoothing_length_iterate(Particles<D>& p, const Box<D>& box, const SmoothingLengthControl& c) {
+  VerletList<D> lists(c.skin);
+  return smoothing_length_iterate(p, box, c, lists);
 }
 
 }  // namespace sph

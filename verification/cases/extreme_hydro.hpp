@@ -10,6 +10,7 @@
 // expanding with it is driven to u < 0 (the Sedov blast shows it). (38) is the default here.
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -91,9 +92,10 @@ sph::HydroOutcome evolve_gas(sph::Particles<D>& p, const sph::Box<D>& box, const
   const sph::ArtificialViscosity<D> visc{m.alpha, m.beta, 0.01, 0.5};
   if (m.hmode == "iterate50") {
     auto user = hooks.constrain;
-    hooks.constrain = [user, hc, &box](sph::Particles<D>& q, double t) {
+    auto lists = std::make_shared<sph::VerletList<D>>(hc.skin);  // reused from step to step
+    hooks.constrain = [user, hc, &box, lists](sph::Particles<D>& q, double t) {
       if (user) user(q, t);
-      sph::smoothing_length_iterate(q, box, hc);
+      sph::smoothing_length_iterate(q, box, hc, *lists);
     };
   }
   auto with_h = [&](auto energy) {
