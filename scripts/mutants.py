@@ -243,10 +243,18 @@ class Baseline:
         return self.cache["tests"][name]
 
 
+def source_commit():
+    """The commit the mutants are applied to (with "+dirty" when the tree has changes)."""
+    head = subprocess.run(["git", "rev-parse", "--short", "HEAD"], cwd=ROOT, capture_output=True, text=True)
+    dirty = subprocess.run(["git", "status", "--porcelain", "--untracked-files=no"], cwd=ROOT, capture_output=True,
+                           text=True)
+    return (head.stdout.strip() or "unknown") + ("+dirty" if dirty.stdout.strip() else "")
+
+
 def mutant_run(m, scratch, base, cases, tests, args, work):
     """Applies, builds and judges one mutant; returns its kill-matrix row."""
     t0 = time.time()
-    row = {"id": m["id"], "area": m["area"], "description": m["description"], "killed": False,
+    row = {"id": m["id"], "commit": source_commit(), "area": m["area"], "description": m["description"], "killed": False,
            "by_verification": False, "failed_checks": [], "failed_tests": [], "wall_time_s": 0.0}
     shutil.rmtree(work, ignore_errors=True)
     work.mkdir(parents=True)
