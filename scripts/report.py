@@ -302,9 +302,10 @@ def mutants_page(km):
             f"<p>Each mutant is a realistic fault applied to a copy of the code; the gates ran against it. "
             f"<b>{killed} of {len(ms)}</b> killed, <b>{by_ver}</b> of them by a verification check (not only a drift "
             f"baseline); {len(ms) - killed} survived. {'Quick subset. ' if km.get('quick') else ''}"
+            f"Each row names the commit the fault was applied to. "
             f"Total wall time {fmt(km.get('total_wall_time_s'), '.0f')} s.</p>",
             "<table><tr><th>mutant</th><th>area</th><th>fault</th><th>outcome</th><th>first failed checks (case / variant: check, kind)</th>"
-            "<th>failed tests</th><th>wall s</th></tr>"]
+            "<th>failed tests</th><th>commit</th><th>wall s</th></tr>"]
     for m in ms:
         state = (f"not run: {m['error']}", "fail") if m.get("error") else \
                 ("killed by verification", "verified") if m.get("by_verification") else \
@@ -315,7 +316,7 @@ def mutants_page(km):
         body.append(f"<tr><td>{e(m.get('id'))}</td><td>{e(m.get('area'))}</td><td class='why'>{e(m.get('description'))}</td>"
                     f"<td class='{state[1]}'>{state[0]}</td><td class='why'>{checks}</td>"
                     f"<td class='why'>{e(', '.join(map(str, m.get('failed_tests', []))))}</td>"
-                    f"<td class='num'>{fmt(m.get('wall_time_s'), '.0f')}</td></tr>")
+                    f"<td>{e(m.get('commit', ''))}</td><td class='num'>{fmt(m.get('wall_time_s'), '.0f')}</td></tr>")
     body.append("</table>")
     return page("sphv: mutation testing", "".join(body))
 
