@@ -13,6 +13,7 @@
 #include "sph/hydro_density.hpp"
 #include "sph/hydro_smoothing_length.hpp"
 #include "sph/lattice.hpp"
+#include "sph/smoothing_length.hpp"
 #include "sph/verdict.hpp"
 #include "verification/sweep.hpp"
 
@@ -228,6 +229,38 @@ TEST_CASE("hydro terms equal a direct sum of the chapter's (22)-(53) on a non-un
             const double Pi = (-alpha * 0.5 * (c[i] + c[j]) * mu + beta * mu * mu) / (0.5 * (rho[i] + rho[j]));
             return PairRates{-m[j] * Pi * g, 0.5 * m[j] * Pi * vij.dot(g)};
           });
+}
+
+// smoothing_length_iterate's contract on a gas whose mass per particle varies threefold, in an
+// open box (edge particles have few neighbours) and a periodic one: it converges, the returned rho
+// is the summation density (27) of the returned h, as a direct sum over all pairs gives it
+// (tolerance 1e-12: round-off of a few dozen terms), and h satisfies (50) for that rho to within
+// the iteration's tolerance (the last change of h was below tol; 2 tol leaves room for rounding).
+TEST_CASE("(50) iterated: rho is the direct sum (27) of the returned h, and h fits (50)", "[hydro]") {
+  constexpr int D = 2;
+  for (bool periodic : {false, true}) {
+    const sph::Box<D> box = sph::unit_box<D>(periodic);
+    auto p = sph::lattice<D>(16, box, 1.0, 1.5, 0.2, 23);  // h far from (50)'s: many iterations
+    for (std::size_t i = 0; i < p.size(); ++i) p.m[i] *= 1.0 + 2.0 * p.x[i][0] * p.x[i][0];
+    const sph::SmoothingLengthControl c{.hfact = 2.4};
+    const auto out = sph::smoothing_length_iterate(p, box, c);
+    REQUIRE(out.converged);
+    CHECK(out.iterations > 2);
+    const sph::Vec<D> L = box.length(), wrap = box.wrap_factor();
+    double worst_rho = 0.0, worst_h = 0.0;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      double rho = p.m[i] * sph::CubicSpline<D>::W(0.0, p.h[i]);
+      for (std::size_t j = 0; j < p.size(); ++j)
+        if (j != i)
+          rho += p.m[j] * sph::CubicSpline<D>::W(sph::min_image<D>(p.x[i] - p.x[j], L, wrap).norm(),
+                                                 0.5 * (p.h[i] + p.h[j]));
+      worst_rho = std::max(worst_rho, std::abs(p.rho[i] - rho) / rho);
+      worst_h = std::max(worst_h, std::abs(p.h[i] - c.hfact * std::sqrt(p.m[i] / rho)) / p.h[i]);  // (50), D = 2
+    }
+    INFO((periodic ? "periodic" : "open") << " box: rho differs by " << worst_rho << ", h from (50) by " << worst_h);
+    CHECK(worst_rho < 1e-12);
+    CHECK(worst_h < 2.0 * c.tol);
+  }
 }
 
 TEST_CASE("verdict names the first bad particle and quantity", "[hydro]") {
