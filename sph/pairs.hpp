@@ -12,9 +12,10 @@ namespace sph {
 inline double h_ij(double hi, double hj) { return 0.5 * (hi + hj); }
 
 // The pair loop: for every particle i (in the list's visiting order) and every listed j that
-// interacts with it (|r_ij| < h_ij: W_ij and grad W_ij vanish beyond), f(acc, i, j, r_ij, |r_ij|, h_ij)
-// with r_ij = r_i - r_j at the nearest image adds pair j's share to acc (a local, so the sum stays in registers and no store inside the loop can
-// alias the particle data the next pair reads), then store(i, acc) writes i's outputs once.
+// interacts with it (|r_ij| < h_ij: W_ij and grad W_ij vanish beyond), f(acc, i, j, r_ij, |r_ij|,
+// h_ij) with r_ij = r_i - r_j at the nearest image adds pair j's share to acc (a local, so the sum
+// stays in registers and no store inside the loop can alias the particle data the next pair
+// reads), then store(i, acc) writes i's outputs once.
 // Each i is handled by one thread and writes only i's outputs, so the result is independent of
 // the thread count.
 template <int D, class Acc, class F, class Store>
