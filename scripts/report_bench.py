@@ -11,7 +11,8 @@ def bench_body(results, out):
     e = html.escape
     body = [f"<h1>sphv benchmarks</h1><p>{e(b['benchmark'])}; {e(str(pr.get('cpu')))}, {pr.get('cores')} cores, build "
             f"{e(str(pr.get('build_type')))} ({e(str(pr.get('cxx_flags')))}), {e(str(pr.get('compiler')))}, commit "
-            f"{e(str(pr.get('git_commit')))}. Benchmarks, not tests: nothing fails on a time.</p><div class='figs'>"]
+            f"{e(str(pr.get('git_commit')))}, pair loops on the {e(str(pr.get('isa_path', 'portable')))} instruction-set "
+            f"path. Benchmarks, not tests: nothing fails on a time.</p><div class='figs'>"]
     for f in b["figures"]:
         stem = figs.run_figure(f, "", out / "fig" / "bench" / f["name"])
         if stem:
@@ -19,15 +20,18 @@ def bench_body(results, out):
             body.append(f"<figure><a href='{e(png)}'><img src='{e(png)}' alt='{e(f['title'])}'></a>"
                         f"<figcaption>{e(f['title'])} (<a href='{e(pdf)}'>PDF</a>)</figcaption></figure>")
     body.append("</div><table><tr><th>stage</th><th>N</th><th>threads</th><th>seconds</th><th>particle updates/s</th>"
-                "<th>pair interactions/s</th></tr>")
+                "<th>pair interactions/s</th><th>ns per pair</th></tr>")
     for r in b["rows"]:
         body.append(f"<tr><td>{e(r['stage'])}</td><td class='num'>{r['n']}</td><td class='num'>{r['threads']}</td>"
                     f"<td class='num'>{fmt(r['seconds'], '.4g')}</td><td class='num'>{fmt(r['particle_updates_per_s'], '.3e')}</td>"
-                    f"<td class='num'>{fmt(r['pairs_per_s'], '.3e')}</td></tr>")
+                    f"<td class='num'>{fmt(r['pairs_per_s'], '.3e')}</td>"
+                    f"<td class='num'>{fmt(r.get('ns_per_pair'), '.2f')}</td></tr>")
     body.append("</table><p>Fitted cost slopes (time ~ N^slope): " +
                 ", ".join(f"{e(k)} {fmt(v, '.2f')}" for k, v in b["fitted_slopes"].items()) +
                 ". Bytes per particle (hydro state + neighbour list, counted): " +
                 ", ".join(f"N={k}: {v:.0f}" for k, v in b["bytes_per_particle"].items()) +
                 "; peak resident memory per particle (measured, whole process): " +
-                ", ".join(f"N={k}: {v:.0f}" for k, v in b.get("peak_resident_bytes_per_particle", {}).items()) + ".</p>")
+                ", ".join(f"N={k}: {v:.0f}" for k, v in b.get("peak_resident_bytes_per_particle", {}).items()) +
+                "; neighbour searches per full hydro step (lists reused while they cover): " +
+                ", ".join(f"N={k}: {v:.2f}" for k, v in b.get("searches_per_step", {}).items()) + ".</p>")
     return "".join(body)

@@ -60,7 +60,8 @@ sph::Particles<3> uniform_gas(long n, sph::Box<3>& box) {
   return sph::lattice<3>(side, box, 1.0, 2.4, 0.1, 7);
 }
 
-std::vector<Row> measure(long n_wanted, int threads, const BenchOptions& o, double& bytes_per_particle) {
+std::vector<Row> measure(long n_wanted, int threads, const BenchOptions& o, double& bytes_per_particle,
+                         double& searches_per_step) {
   omp_set_num_threads(threads);
   std::vector<Row> rows;
   sph::Box<3> box;
@@ -84,6 +85,8 @@ std::vector<Row> measure(long n_wanted, int threads, const BenchOptions& o, doub
   const HydroTimes hydro = time_hydro_step(p, box, best_time);
   rows.push_back({"hydro forces", n, threads, hydro.forces, hydro.pairs});
   rows.push_back({"full hydro step", n, threads, hydro.step, hydro.pairs});
+  rows.push_back({"full hydro step, search every step", n, threads, hydro.step_fresh_search, hydro.pairs});
+  searches_per_step = hydro.searches_per_step;
   bytes_per_particle = hydro.bytes_per_particle;
   if (n <= o.tree_max) {
     sph::Tree<3> tree;
@@ -113,19 +116,21 @@ double peak_resident_bytes() {
 
 void bench(const BenchOptions& o) {
   std::vector<Row> rows;
-  std::map<long, double> bytes, resident;
+  std::map<long, double> bytes, resident, searches_per_step;
   std::filesystem::create_directories(o.out);  // an unwritable output is refused before the work
-  std::printf("%-38s %9s %7s %10s %14s %14s\n", "stage", "N", "threads", "seconds", "updates/s", "pairs/s");
+  std::printf("%-38s %9s %7s %10s %14s %14s %9s\n", "stage", "N", "threads", "seconds", "updates/s", "pairs/s",
+              "ns/pair");
   for (int threads : o.threads)
     for (long n : o.sizes) {
-      double b = 0.0;
-      for (const Row& r : measure(n, threads, o, b)) {
+      double b = 0.0, searches = 0.0;
+      for (const Row& r : measure(n, threads, o, b, searches)) {
         rows.push_back(r);
-        std::printf("%-38s %9ld %7d %10.4f %14.3e %14.3e\n", r.stage.c_str(), r.n, r.threads, r.seconds,
-                    r.n / r.seconds, r.pairs / r.seconds);
+        std::printf("%-38s %9ld %7d %10.4f %14.3e %14.3e %9.2f\n", r.stage.c_str(), r.n, r.threads, r.seconds,
+                    r.n / r.seconds, r.pairs / r.seconds, r.pairs > 0.0 ? 1e9 * r.seconds / r.pairs : 0.0);
         std::fflush(stdout);
       }
       bytes[rows.back().n] = b;
+      searches_per_step[rows.back().n] = searches;
       // Measured: the process's peak over a pass of ascending N is set by the largest N so far
       // (the first thread count's pass only: later passes start at that peak).
       if (threads == o.threads.front()) resident[rows.back().n] = peak_resident_bytes() / rows.back().n;
@@ -146,7 +151,8 @@ void bench(const BenchOptions& o) {
     const double slope = s.x.size() >= 2 ? -observed_order(s.x, s.y).p : NAN;
     slopes[stage] = std::isfinite(slope) ? nlohmann::json(slope) : nlohmann::json();
     char label[160];
-    std::snprintf(label, sizeof label, "%s: slope %.2f", stage.c_str(), slope);
+    if (std::isfinite(slope)) std::snprintf(label, sizeof label, "%s: slope %.2f", stage.c_str(), slope);
+    else std::snprintf(label, sizeof label, "%s: one N, no slope", stage.c_str());
     s.label = label;
     s.style = "line";
     fig.series.push_back(s);
@@ -161,19 +167,24 @@ void bench(const BenchOptions& o) {
   nlohmann::json jr = nlohmann::json::array(), jb = nlohmann::json::object();
   for (const Row& r : rows)
     jr.push_back({{"stage", r.stage}, {"n", r.n}, {"threads", r.threads}, {"seconds", r.seconds},
-                  {"pairs", r.pairs}, {"particle_updates_per_s", r.n / r.seconds}, {"pairs_per_s", r.pairs / r.seconds}});
-  nlohmann::json jm = nlohmann::json::object();
+                  {"pairs", r.pairs}, {"particle_updates_per_s", r.n / r.seconds}, {"pairs_per_s", r.pairs / r.seconds},
+                  {"ns_per_pair", r.pairs > 0.0 ? nlohmann::json(1e9 * r.seconds / r.pairs) : nlohmann::json()}});
+  nlohmann::json jm = nlohmann::json::object(), js = nlohmann::json::object();
+  for (const auto& [n, v] : searches_per_step) js[std::to_string(n)] = v;
   for (const auto& [n, b] : bytes) jb[std::to_string(n)] = b;
   for (const auto& [n, b] : resident) jm[std::to_string(n)] = b;
   const nlohmann::json j = {{"benchmark", "3D uniform gas, lattice jittered 0.1 dx, h = 2.4 dx"},
                             {"rows", jr}, {"fitted_slopes", slopes}, {"bytes_per_particle", jb},
-                            {"peak_resident_bytes_per_particle", jm},
+                            {"peak_resident_bytes_per_particle", jm}, {"searches_per_step", js},
                             {"figures", {to_json(fig), to_json(upd)}}, {"provenance", provenance()}};
   write_atomically(o.out / "bench.json", j.dump(1) + "\n");
   std::printf("fitted cost slopes (time ~ N^slope):");
-  for (const auto& [k, v] : slopes.items()) std::printf(" %s %.2f;", k.c_str(), v.is_number() ? v.get<double>() : NAN);
+  for (const auto& [k, v] : slopes.items())
+    if (v.is_number()) std::printf(" %s %.2f;", k.c_str(), v.get<double>());
   std::printf("\nbytes per particle (hydro state + neighbour list):");
   for (const auto& [n, b] : bytes) std::printf(" N=%ld: %.0f", n, b);
+  std::printf("\nneighbour searches per full hydro step (lists reused while they cover):");
+  for (const auto& [n, v] : searches_per_step) std::printf(" N=%ld: %.2f", n, v);
   std::printf("\npeak resident memory per particle (measured, whole process):");
   for (const auto& [n, b] : resident) std::printf(" N=%ld: %.0f", n, b);
   std::printf("\nwritten %s\n", (o.out / "bench.json").string().c_str());

@@ -15,6 +15,7 @@
 #include <thread>
 #include <unistd.h>
 
+#include "sph/isa.hpp"
 #include "verification/allocator.hpp"
 #include "verification/case.hpp"
 #include "verification/baseline.hpp"
@@ -225,7 +226,8 @@ int run_main(int argc, char** argv) {
   fs::path baselines;
   app.add_option("--baselines", baselines, "drift baselines folder (default: <sphv's folder>/../reference/baselines)");
   app.footer("Exit status: 0 every gate passed and every run ended as its case expects; 1 a gate failed or a run "
-             "went unstable where it should not; 2 bad input; 3 I/O error.");
+             "went unstable where it should not; 2 bad input; 3 I/O error.\nEnvironment: SPHV_ISA=portable|avx2 "
+             "chooses the pair loops' instruction-set path (default: the fastest this CPU supports).");
 
   auto* list = app.add_subcommand("list", "every case, what its n counts, and its tags");
   auto* info_cmd = app.add_subcommand("info", "a case's parameters with defaults, levels and expected orders");
@@ -290,6 +292,11 @@ int run_main(int argc, char** argv) {
   // One set of handlers for the parse (bench and gravity run inside it, as callbacks) and for
   // the commands after it: every error ends as one line and a non-zero exit.
   try {
+    try {
+      sph::isa_path();  // the pair loops' instruction-set path: SPHV_ISA is checked before any run
+    } catch (const std::invalid_argument& e) {
+      throw InputError(e.what());
+    }
     app.parse(argc, argv);
     if (threads > 0) omp_set_num_threads(threads);
     if (!baselines.empty()) set_baseline_dir(baselines);

@@ -17,6 +17,7 @@
 #include <thread>
 
 #include "build_info.hpp"
+#include "sph/isa.hpp"
 #include "verification/cost.hpp"
 #include "verification/build_id.hpp"
 #include "verification/mpi.hpp"
@@ -31,7 +32,8 @@ using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 // The point's result when one exists that this exact build produced with these parameters:
-// same executable bytes (SHA-256 of `exe`, the binary that runs the points) and build flags.
+// same executable bytes (SHA-256 of `exe`, the binary that runs the points), build flags and
+// instruction-set path (sph/isa.hpp: SPHV_ISA or another CPU changes the round-off).
 // A commit alone does not say what ran: an uncommitted edit or another flag rebuilds the binary.
 std::optional<Result> finished(const Point& pt, const Params& p, const std::string& exe_sha256) {
   const auto file = pt.dir / "result.json";
@@ -41,7 +43,7 @@ std::optional<Result> finished(const Point& pt, const Params& p, const std::stri
     const auto j = nlohmann::json::parse(f);
     const auto& prov = j.at("provenance");
     if (j.at("params") != p.to_json() || prov.at("executable_sha256") != exe_sha256 ||
-        prov.at("cxx_flags") != build::cxx_flags)
+        prov.at("cxx_flags") != build::cxx_flags || prov.value("isa_path", "") != sph::isa_name(sph::isa_path()))
       return std::nullopt;
     return result_from_json(j);
   } catch (const std::exception&) {

@@ -13,6 +13,7 @@
 #include <thread>
 
 #include "build_info.hpp"
+#include "sph/isa.hpp"
 #include "verification/build_id.hpp"
 
 namespace sphv {
@@ -44,7 +45,7 @@ nlohmann::json provenance() {
   return {{"git_commit", build::git_commit}, {"source_tree", source_tree()},
           {"executable_sha256", executable_sha256()}, {"compiler", build::compiler},
           {"cxx_flags", build::cxx_flags},   {"build_type", build::build_type},
-          {"threads", omp_get_max_threads()}, {"date", date},
+          {"threads", omp_get_max_threads()}, {"isa_path", sph::isa_name(sph::isa_path())}, {"date", date},
           {"host", host}, {"cpu", cpu_model()}, {"cores", std::thread::hardware_concurrency()}};
 }
 

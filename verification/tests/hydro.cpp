@@ -12,6 +12,7 @@
 #include "sph/hydro.hpp"
 #include "sph/hydro_density.hpp"
 #include "sph/hydro_smoothing_length.hpp"
+#include "sph/isa.hpp"
 #include "sph/lattice.hpp"
 #include "sph/smoothing_length.hpp"
 #include "sph/verdict.hpp"
@@ -116,7 +117,21 @@ struct PairRates {
 };
 }  // namespace
 
+// Run on each instruction-set path of the pair loops (sph/isa.hpp) this CPU supports: each must
+// equal the direct sums, whichever the harness picks.
 TEST_CASE("hydro terms equal a direct sum of the chapter's (22)-(53) on a non-uniform gas", "[hydro]") {
+  const sph::IsaPath path = GENERATE(sph::IsaPath::portable, sph::IsaPath::avx2);
+  if (!sph::isa_supported(path)) {
+    WARN("instruction-set path " << sph::isa_name(path) << " not supported by this CPU: not tested");
+    return;
+  }
+  const sph::IsaPath before = sph::isa_path();
+  sph::set_isa_path(path);
+  struct Restore {
+    sph::IsaPath p;
+    ~Restore() { sph::set_isa_path(p); }
+  } restore{before};
+  INFO("instruction-set path " << sph::isa_name(path));
   constexpr int D = 2;
   const double gamma = 1.4;
   const sph::Box<D> box = sph::unit_box<D>(false);
