@@ -68,19 +68,21 @@ struct HydroHooks {
   std::function<void(const Particles<D>&, const Derivatives<D>&, long, double)> stepped;
 };
 
-// Advances the particles to c.t_end. Ends with "ok", or with the first step and particle where
-// the state went bad, or with the step budget exhausted; never throws on a blow-up.
-template <int D, class... Terms>
-HydroOutcome evolve(Scene<D, Terms...>& scene, Particles<D>& p, const Box<D>& box, const HydroControls& c,
-                    const HydroHooks<D>& hooks = {}) {
-  const ArtificialViscosity<D>* visc = nullptr;
-  if constexpr ((std::is_same_v<Terms, ArtificialViscosity<D>> || ...))
-    visc = &scene.template term<ArtificialViscosity<D>>();
+// The rates of a scene at a state with its neighbourhood: all that evolve needs of a scene.
+template <int D>
+using SceneRates = std::function<void(Particles<D>&, const Neighbourhood<D>&, Derivatives<D>&)>;
+
+// evolve's loop, behind SceneRates: compiled once per dimension, not once per scene type (a case
+// choosing among 72 scenes would otherwise compile 72 copies of the integrators and this loop).
+// visc (may be null) sets the viscous signal speed of the Courant step.
+template <int D>
+HydroOutcome evolve_rates(const SceneRates<D>& rates, const ArtificialViscosity<D>* visc, Particles<D>& p,
+                          const Box<D>& box, const HydroControls& c, const HydroHooks<D>& hooks) {
   Derivatives<D> d;
   HydroOutcome out;
   VerletList<D> lists(c.skin);
   auto derivs = [&](Particles<D>& q, Derivatives<D>& dd) {
-    scene.derivatives(q, Neighbourhood<D>{lists.update(q.x, q.h, box), box}, dd);
+    rates(q, Neighbourhood<D>{lists.update(q.x, q.h, box), box}, dd);
     if (hooks.evaluated) hooks.evaluated(q, dd);
   };
   auto bad_state = [&](const std::string& what) {
@@ -113,6 +115,18 @@ HydroOutcome evolve(Scene<D, Terms...>& scene, Particles<D>& p, const Box<D>& bo
     return bad_state(e.what());
   }
   return out;
+}
+
+// Advances the particles to c.t_end. Ends with "ok", or with the first step and particle where
+// the state went bad, or with the step budget exhausted; never throws on a blow-up.
+template <int D, class... Terms>
+HydroOutcome evolve(Scene<D, Terms...>& scene, Particles<D>& p, const Box<D>& box, const HydroControls& c,
+                    const HydroHooks<D>& hooks = {}) {
+  const ArtificialViscosity<D>* visc = nullptr;
+  if constexpr ((std::is_same_v<Terms, ArtificialViscosity<D>> || ...))
+    visc = &scene.template term<ArtificialViscosity<D>>();
+  auto rates = [&](Particles<D>& q, const Neighbourhood<D>& nb, Derivatives<D>& d) { scene.derivatives(q, nb, d); };
+  return evolve_rates<D>(rates, visc, p, box, c, hooks);
 }
 
 }  // namespace sph

@@ -66,7 +66,8 @@ struct Scene {
     if constexpr ((has_pair<Terms> || ...)) {
       sum_over_pairs<D, PairSums<D>>(
           p.x, p.h, nb.list, nb.box,
-          [&](PairSums<D>& s, std::size_t i, int j, const Vec<D>& rij, double r, double h) __attribute__((always_inline)) {
+          [&](PairSums<D>& s, std::size_t i, int j, const Vec<D>& rij, double r, double h)
+              __attribute__((always_inline)) {
             const Pair<D> pr{i, j, rij, r, h, CubicSpline<D>::gradW(rij, r, h)};
             std::apply([&](auto&... t) { (pair(t, p, s, pr), ...); }, terms);
           },
