@@ -27,7 +27,6 @@ struct ConductionParams {
 template <int D>
 struct BrookshawConduction {
   ConductionParams k;
-  [[gnu::always_inline]]
   void pair(const Particles<D>& p, PairSums<D>& s, const Pair<D>& pr) const {
     const double Ti = p.u[pr.i] / k.c_v, Tj = p.u[pr.j] / k.c_v;
     s.dudt += k.K / p.rho[pr.i] * brookshaw_pair<D>(p.m[pr.j] / p.rho[pr.j], Ti, Tj, pr.rij, pr.r, pr.gradW);
@@ -45,7 +44,6 @@ struct TwoPassConduction {
     for (std::size_t i = 0; i < p.size(); ++i) T[i] = p.u[i] / k.c_v;
     gradT = sph_gradient<D, Form>(p, T, nb);
   }
-  [[gnu::always_inline]]
   void pair(const Particles<D>& p, PairSums<D>& s, const Pair<D>& pr) const {
     s.dudt += k.K / p.rho[pr.i] * Form::outer(p.rho[pr.i]) * divergence_pair<D, Form>(p, gradT, pr.i, pr.j, pr.gradW);
   }

@@ -12,9 +12,7 @@ void density_summation(Particles<D>& p, const NeighbourList& nl, const Box<D>& b
   using K = CubicSpline<D>;
   sum_over_pairs<D, double>(
       p.x, p.h, nl, box,
-      [&](double& rho, std::size_t, int j, const Vec<D>&, double r, double h) __attribute__((always_inline)) {
-        rho += p.m[j] * K::W(r, h);
-      },
+      [&](double& rho, std::size_t, int j, const Vec<D>&, double r, double h) { rho += p.m[j] * K::W(r, h); },
       [&](std::size_t i, double rho) { p.rho[i] = p.m[i] * K::W(0.0, p.h[i]) + rho; });
 }
 

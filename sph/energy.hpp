@@ -9,7 +9,6 @@ enum class EnergyForm { direct37, difference38, swapped40 };
 
 template <int D, EnergyForm F>
 struct EnergyAsymmetric {
-  [[gnu::always_inline]]
   void pair(const Particles<D>& p, PairSums<D>& s, const Pair<D>& q) const {
     const double w = p.m[q.j] / (p.rho[q.i] * p.rho[q.j]);
     if constexpr (F == EnergyForm::direct37)
@@ -27,7 +26,6 @@ struct EnergyAsymmetric {
 template <int D, class Lambda>
 struct EnergySymmetric {
   Lambda lambda{};
-  [[gnu::always_inline]]
   void pair(const Particles<D>& p, PairSums<D>& s, const Pair<D>& q) const {
     s.dudt += 0.5 * p.m[q.j] * lambda.factor(p.p[q.i], p.p[q.j], p.rho[q.i], p.rho[q.j]) *
                    (p.v[q.i] - p.v[q.j]).dot(q.gradW);

@@ -26,7 +26,6 @@ struct LambdaGeneral {  // (25) with any lambda
 // Not antisymmetric in i, j: momentum is not conserved.
 template <int D>
 struct EulerDirect {
-  [[gnu::always_inline]]
   void pair(const Particles<D>& p, PairSums<D>& s, const Pair<D>& q) const {
     s.dvdt -= (p.m[q.j] * p.p[q.j] / (p.rho[q.i] * p.rho[q.j])) * q.gradW;
   }
@@ -36,7 +35,6 @@ struct EulerDirect {
 template <int D, class Lambda>
 struct EulerSymmetric {
   Lambda lambda{};
-  [[gnu::always_inline]]
   void pair(const Particles<D>& p, PairSums<D>& s, const Pair<D>& q) const {
     s.dvdt -= (p.m[q.j] * lambda.factor(p.p[q.i], p.p[q.j], p.rho[q.i], p.rho[q.j])) * q.gradW;
   }

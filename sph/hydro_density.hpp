@@ -18,7 +18,6 @@ enum class ContinuityForm { direct29, difference33 };
 
 template <int D, ContinuityForm F>
 struct ContinuityDensity {
-  [[gnu::always_inline]]
   void pair(const Particles<D>& p, PairSums<D>& s, const Pair<D>& q) const {
     if constexpr (F == ContinuityForm::direct29)
       s.drhodt -= p.m[q.j] * p.v[q.j].dot(q.gradW);  // (29)

@@ -54,9 +54,7 @@ struct Neighbourhood {
 //   void pair(const Particles<D>&, PairSums<D>&, const Pair<D>&)           inside it (adds i's share)
 //   void finish(const Particles<D>&, const Neighbourhood<D>&, Derivatives<D>&)  after it
 // The pair loop is a fold over the terms that have pair(): a term the scene does not list is not
-// compiled into it, and no flag is tested per pair. Terms declare pair() always_inline: inlined,
-// it is compiled for the instruction set of the loop it runs in (pairs.hpp); left to GCC's
-// heuristics, a term used by many scenes (the viscosity) stayed a call, 10 % of a 3D step.
+// compiled into it, and no flag is tested per pair.
 template <int D, class... Terms>
 struct Scene {
   static constexpr int dim = D;
@@ -68,8 +66,7 @@ struct Scene {
     if constexpr ((has_pair<Terms> || ...)) {
       sum_over_pairs<D, PairSums<D>>(
           p.x, p.h, nb.list, nb.box,
-          [&](PairSums<D>& s, std::size_t i, int j, const Vec<D>& rij, double r, double h)
-              __attribute__((always_inline)) {
+          [&](PairSums<D>& s, std::size_t i, int j, const Vec<D>& rij, double r, double h) {
             const Pair<D> pr{i, j, rij, r, h, CubicSpline<D>::gradW(rij, r, h)};
             std::apply([&](auto&... t) { (pair(t, p, s, pr), ...); }, terms);
           },
@@ -97,7 +94,7 @@ struct Scene {
     if constexpr (requires { t.prepare(p, nb); }) t.prepare(p, nb);
   }
   template <class T>
-  [[gnu::always_inline]] static void pair(T& t, const Particles<D>& p, PairSums<D>& s, const Pair<D>& pr) {
+  static void pair(T& t, const Particles<D>& p, PairSums<D>& s, const Pair<D>& pr) {
     if constexpr (has_pair<T>) t.pair(p, s, pr);
   }
   template <class T>

@@ -16,7 +16,6 @@ struct ArtificialViscosity {
 
   // Branch-free: a receding pair has v_ij . r_ij clipped to 0, so mu_ij = Pi_ij = 0 (45) without
   // a jump that half the pairs would mispredict.
-  [[gnu::always_inline]]
   void pair(const Particles<D>& p, PairSums<D>& s, const Pair<D>& q) const {
     const Vec<D> vij = p.v[q.i] - p.v[q.j];
     const double vr = std::min(vij.dot(q.rij), 0.0);  // (45): only approaching pairs

@@ -54,7 +54,7 @@ inline HydroTimes time_hydro_step(sph::Particles<3>& p, const sph::Box<3>& box,
     step.derivatives(q, Neighbourhood<3>{lists.update(q.x, q.h, box), box}, dd);
   };
   reused(p, d);
-  const ArtificialViscosity<3> visc;
+  const auto& visc = step.term<ArtificialViscosity<3>>();
   constexpr int steps = 8;
   const long searches_before = lists.searches();
   long taken = 0;
