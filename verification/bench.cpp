@@ -11,6 +11,8 @@
 #include <functional>
 #include <map>
 
+#include <CLI/CLI.hpp>
+
 #include "reference/direct_sum.hpp"
 #include "sph/density.hpp"
 #include "sph/gravity_tree.hpp"

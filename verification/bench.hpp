@@ -1,5 +1,5 @@
 #pragma once
-#include <CLI/CLI.hpp>
+#include "verification/cli_app.hpp"
 
 namespace sphv {
 

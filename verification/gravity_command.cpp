@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include <CLI/CLI.hpp>
+
 #include "verification/cases/gravity_compare.hpp"
 #include "verification/cases/gravity_models.hpp"
 #include "verification/gravity_input.hpp"

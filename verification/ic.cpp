@@ -4,6 +4,8 @@
 #include <map>
 #include <optional>
 
+#include <CLI/CLI.hpp>
+
 #include "verification/cases/evrard_setup.hpp"
 #include "verification/cases/heat_errors.hpp"
 #include "verification/cases/heat_lattice.hpp"

@@ -1,7 +1,7 @@
 #pragma once
 // `sphv ic CASE [--set key=value]... --out FILE [--format csv|swift|h5part]`: a case's initial
 // conditions at a level, so that another code starts from exactly what sphv starts from.
-#include <CLI/CLI.hpp>
+#include "verification/cli_app.hpp"
 #include <filesystem>
 #include <functional>
 #include <string>

@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <sstream>
 
+#include <CLI/CLI.hpp>
+
 namespace sphv {
 
 const Scorer& find_scorer(const std::string& case_name) {

@@ -1,7 +1,7 @@
 #pragma once
 // `sphv score CASE --snapshot FILE`: a snapshot written by any SPH code scored against the case's
 // exact reference, with the same error names and definitions as the case's own runs.
-#include <CLI/CLI.hpp>
+#include "verification/cli_app.hpp"
 #include <functional>
 #include <map>
 #include <string>
