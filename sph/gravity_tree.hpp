@@ -136,20 +136,10 @@ GravityField field(const Tree<3>& t, const std::vector<Vec<3>>& x, const std::ve
 }  // namespace detail
 
 // Gravity at `targets`; at_particles: the targets are the particles x themselves (each skips
-// its own mass). The method choice is dispatched once, outside the walks.
-inline GravityField tree_gravity_at(const Tree<3>& t, const std::vector<Vec<3>>& x, const std::vector<double>& m,
-                                    const GravityOptions& o, const std::vector<Vec<3>>& targets,
-                                    bool at_particles = false) {
-  if (!(o.theta > 0.0)) throw std::invalid_argument("tree gravity: opening angle theta must be > 0");
-  if (!(o.eps >= 0.0)) throw std::invalid_argument("tree gravity: softening eps must be >= 0");
-  using enum Multipole;
-  using enum Opening;
-  if (o.multipole == monopole)
-    return o.opening == plain ? detail::field<monopole, plain>(t, x, m, o, targets, at_particles)
-                              : detail::field<monopole, robust>(t, x, m, o, targets, at_particles);
-  return o.opening == plain ? detail::field<quadrupole, plain>(t, x, m, o, targets, at_particles)
-                            : detail::field<quadrupole, robust>(t, x, m, o, targets, at_particles);
-}
+// its own mass). The method choice is dispatched once, outside the walks (sph/gravity_tree.cpp:
+// the four walks are compiled there once).
+GravityField tree_gravity_at(const Tree<3>& t, const std::vector<Vec<3>>& x, const std::vector<double>& m,
+                             const GravityOptions& o, const std::vector<Vec<3>>& targets, bool at_particles = false);
 
 // Gravity at every particle from all the others.
 inline GravityField tree_gravity(const Tree<3>& t, const std::vector<Vec<3>>& x, const std::vector<double>& m,

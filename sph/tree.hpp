@@ -135,4 +135,7 @@ Tree<D> build_tree(const std::vector<Vec<D>>& x, const std::vector<double>& m, i
   return t;
 }
 
+// Compiled once, in sph/tree.cpp (the gravity tree is 3D).
+extern template Tree<3> build_tree<3>(const std::vector<Vec<3>>&, const std::vector<double>&, int);
+
 }  // namespace sph

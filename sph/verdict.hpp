@@ -45,9 +45,6 @@ std::optional<BadParticle> first_bad(const Particles<D>& p) {
 }
 
 // "unstable: step 132 (t = 0.0123), particle 17: rho <= 0"
-inline std::string unstable_verdict(long step, double t, const BadParticle& b) {
-  return "unstable: step " + std::to_string(step) + " (t = " + std::to_string(t) + "), particle " +
-         std::to_string(b.particle) + ": " + b.what;
-}
+std::string unstable_verdict(long step, double t, const BadParticle& b);
 
 }  // namespace sph
