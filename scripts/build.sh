@@ -4,7 +4,8 @@
 # build (default: all; the main job builds only sphv).
 # SPHV_BUILD_TYPE and SPHV_ARCH (a -march= value, e.g. x86-64-v3) override the defaults;
 # SPHV_WERROR=ON (set by scripts/test.sh, i.e. CI) turns compiler warnings into errors;
-# SPHV_SANITIZER_TESTS=ON (also set by scripts/test.sh) adds the sanitizer tests (CMakeLists.txt).
+# SPHV_SANITIZER_TESTS=ON (also set by scripts/test.sh) adds the sanitizer tests (CMakeLists.txt);
+# SPHV_PCH=ON (also set by scripts/test.sh) precompiles the common headers (CMakeLists.txt).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
@@ -14,5 +15,6 @@ dir=${SPHV_BUILD_DIR:-build}
 generator=()
 if [ ! -f "$dir/CMakeCache.txt" ] && command -v ninja >/dev/null; then generator=(-G Ninja); fi
 cmake "${generator[@]}" -S . -B "$dir" -DCMAKE_BUILD_TYPE="${SPHV_BUILD_TYPE:-Release}" -DSPHV_ARCH="${SPHV_ARCH:-}" ${SPHV_WERROR:+-DSPHV_WERROR="$SPHV_WERROR"} \
-      ${SPHV_RELEASE_FLAGS:+-DCMAKE_CXX_FLAGS_RELEASE="$SPHV_RELEASE_FLAGS"} -DSPHV_SANITIZER_TESTS="${SPHV_SANITIZER_TESTS:-OFF}" >/dev/null
+      ${SPHV_RELEASE_FLAGS:+-DCMAKE_CXX_FLAGS_RELEASE="$SPHV_RELEASE_FLAGS"} -DSPHV_SANITIZER_TESTS="${SPHV_SANITIZER_TESTS:-OFF}" \
+      -DSPHV_PCH="${SPHV_PCH:-OFF}" >/dev/null
 cmake --build "$dir" -j "$(nproc)" ${1:+--target "$@"}

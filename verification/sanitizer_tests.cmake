@@ -8,7 +8,9 @@
 # heat, gravity and evrard) and the result and non-finite tests. Not instrumented here: the
 # physics (sph/, cases) and the sweep code; scripts/test-sanitizers.sh instruments everything.
 sphv_harness_library(harness_input_sanitized ${INPUT_SOURCES})
-target_precompile_headers(harness_input_sanitized PRIVATE ${SPHV_PCH_HEADERS})  # its own flags (-O0, sanitizers)
+if(SPHV_PCH)
+  target_precompile_headers(harness_input_sanitized PRIVATE ${SPHV_PCH_HEADERS})  # its own flags (-O0, sanitizers)
+endif()
 set(_tests fuzz fuzz_snapshots reliability)
 list(TRANSFORM _tests PREPEND ${CMAKE_SOURCE_DIR}/verification/tests/)
 list(TRANSFORM _tests APPEND .cpp)
