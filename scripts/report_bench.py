@@ -5,6 +5,10 @@ import report_figures as figs
 from report_data import fmt, read_json
 
 
+def pct(x):
+    return "" if x is None else f"{100 * x:.1f} %"
+
+
 def bench_body(results, out):
     b = read_json(results / "bench.json")
     pr = b["provenance"]
@@ -20,12 +24,13 @@ def bench_body(results, out):
             body.append(f"<figure><a href='{e(png)}'><img src='{e(png)}' alt='{e(f['title'])}'></a>"
                         f"<figcaption>{e(f['title'])} (<a href='{e(pdf)}'>PDF</a>)</figcaption></figure>")
     body.append("</div><table><tr><th>stage</th><th>N</th><th>threads</th><th>seconds</th><th>particle updates/s</th>"
-                "<th>pair interactions/s</th><th>ns per pair</th></tr>")
+                "<th>pair interactions/s</th><th>ns per pair</th><th>of measured peak</th></tr>")
     for r in b["rows"]:
         body.append(f"<tr><td>{e(r['stage'])}</td><td class='num'>{r['n']}</td><td class='num'>{r['threads']}</td>"
                     f"<td class='num'>{fmt(r['seconds'], '.4g')}</td><td class='num'>{fmt(r['particle_updates_per_s'], '.3e')}</td>"
                     f"<td class='num'>{fmt(r['pairs_per_s'], '.3e')}</td>"
-                    f"<td class='num'>{fmt(r.get('ns_per_pair'), '.2f')}</td></tr>")
+                    f"<td class='num'>{fmt(r.get('ns_per_pair'), '.2f')}</td>"
+                    f"<td class='num'>{pct(r.get('fraction_of_peak'))}</td></tr>")
     body.append("</table><p>Fitted cost slopes (time ~ N^slope): " +
                 ", ".join(f"{e(k)} {fmt(v, '.2f')}" for k, v in b["fitted_slopes"].items()) +
                 ". Bytes per particle (hydro state + neighbour list, counted): " +
@@ -34,4 +39,10 @@ def bench_body(results, out):
                 ", ".join(f"N={k}: {v:.0f}" for k, v in b.get("peak_resident_bytes_per_particle", {}).items()) +
                 "; neighbour searches per full hydro step (lists reused while they cover): " +
                 ", ".join(f"N={k}: {v:.2f}" for k, v in b.get("searches_per_step", {}).items()) + ".</p>")
+    pk = b.get("peak")
+    if pk:
+        body.append(f"<p>Share of peak: the hydro forces at {pk['force_pair_flops']:.0f} floating-point operations a pair "
+                    f"(counted from the source, verification/bench_hydro.hpp) against this CPU's double-precision peak, "
+                    f"measured ({e(pk['method'])}; {e(pk['isa'])}): " +
+                    ", ".join(f"{k} thread(s) {v:.3e} flop/s" for k, v in pk["flops_per_s"].items()) + ".</p>")
     return "".join(body)
