@@ -91,7 +91,7 @@ def point_files(results, out, s):
 
 def provenance_html(sweeps, tier):
     provs = provenances(sweeps)
-    keys = ["git_commit", "build_type", "compiler", "cxx_flags", "host", "cpu", "cores", "threads"]
+    keys = ["git_commit", "build_type", "compiler", "cxx_flags", "isa_path", "host", "cpu", "cores", "threads"]
     parts = [f"<b>tier</b> {e(tier)}"]
     for k in keys:
         vals = sorted({str(p.get(k)) for p in provs if k in p})
