@@ -33,6 +33,7 @@ struct HydroOutcome {
   long steps = 0;
   double t = 0.0;
   std::string verdict = "ok";
+  long searches = 0;  // neighbour searches made (the lists serve while they cover, verlet_list.hpp)
 };
 
 // Total mass, momentum and energy sum_i m_i (v_i^2 / 2 + u_i) of particles [first, last), and
@@ -85,9 +86,13 @@ HydroOutcome evolve_rates(const SceneRates<D>& rates, const ArtificialViscosity<
     rates(q, Neighbourhood<D>{lists.update(q.x, q.h, box), box}, dd);
     if (hooks.evaluated) hooks.evaluated(q, dd);
   };
+  auto ended = [&] {
+    out.searches = lists.searches();
+    return out;
+  };
   auto bad_state = [&](const std::string& what) {
     out.verdict = "unstable: step " + std::to_string(out.steps) + " (t = " + std::to_string(out.t) + "): " + what;
-    return out;
+    return ended();
   };
   try {
     if (auto b = first_bad(p)) return bad_state("initial state, particle " + std::to_string(b->particle) + ": " + b->what);
@@ -107,14 +112,14 @@ HydroOutcome evolve_rates(const SceneRates<D>& rates, const ArtificialViscosity<
       if (hooks.constrain) hooks.constrain(p, out.t);
       if (auto b = first_bad(p)) {
         out.verdict = unstable_verdict(out.steps, out.t, *b);
-        return out;
+        return ended();
       }
       if (hooks.stepped) hooks.stepped(p, d, out.steps, out.t);
     }
   } catch (const std::invalid_argument& e) {  // e.g. a support radius grown beyond a periodic box
     return bad_state(e.what());
   }
-  return out;
+  return ended();
 }
 
 // Advances the particles to c.t_end. Ends with "ok", or with the first step and particle where
