@@ -61,7 +61,8 @@ inline HydroTimes time_hydro_step(sph::Particles<3>& p, const sph::Box<3>& box,
   // verdict's check): evolve itself, run for 1 and for 1 + 8 steps from the same state; the
   // difference over 8 leaves out the start (first evaluation and search). Both are timed alike,
   // once each, after an untimed run that pays the process's first touch of the buffers (a cold
-  // first run took 1.0 s against 0.7 s warm at N = 125,000, and made the difference too small).
+  // first run took 1.03 s against 0.52 s warm at N = 125,000 on one thread, and made the difference
+  // too small).
   HydroControls run;
   run.t_end = 1e30;  // ended by the step budget
   auto evolve_for = [&](long steps, long& searches) {
