@@ -14,6 +14,7 @@
 #include "sph/hydro_density.hpp"
 #include "sph/hydro.hpp"
 #include "sph/integrator.hpp"
+#include "sph/verdict.hpp"
 #include "sph/viscosity.hpp"
 
 namespace sphv {
@@ -65,21 +66,25 @@ inline HydroTimes time_hydro_step(sph::Particles<3>& p, const sph::Box<3>& box,
   // too small).
   HydroControls run;
   run.t_end = 1e30;  // ended by the step budget
-  auto evolve_for = [&](long steps, long& searches) {
+  struct Run {
+    double seconds;
+    long searches;
+  };
+  auto evolve_for = [&](long steps) {
     run.max_steps = steps;
     Particles<3> q = p;
     const auto t0 = std::chrono::steady_clock::now();
     const HydroOutcome out = evolve(step, q, box, run);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    if (out.steps != steps) throw std::runtime_error("bench: the uniform gas went bad: " + out.verdict);
-    searches = out.searches;
-    return seconds;
+    // The budget ends the run with its verdict; a state gone bad on the last step also has
+    // steps == budget, so the particles are checked as well.
+    if (out.steps != steps || first_bad(q)) throw std::runtime_error("bench: the uniform gas went bad: " + out.verdict);
+    return Run{seconds, out.searches};
   };
-  long s1 = 0, s9 = 0;
-  evolve_for(1, s1);
-  const double t1 = evolve_for(1, s1), t9 = evolve_for(9, s9);
-  t.step = (t9 - t1) / 8.0;
-  t.searches_per_step = static_cast<double>(s9 - s1) / 8.0;
+  evolve_for(1);
+  const Run one = evolve_for(1), nine = evolve_for(9);
+  t.step = (nine.seconds - one.seconds) / 8.0;
+  t.searches_per_step = static_cast<double>(nine.searches - one.searches) / 8.0;
   // Particle state (x, v: 6 doubles; m, rho, p, c, u, h: 6), derivatives (dv/dt: 3; du/dt,
   // drho/dt, dh/dt, mu_max: 4) and the KDK step's copy of them, neighbour list (one int per pair,
   // an offset and a place in the visiting order per particle).
