@@ -30,12 +30,32 @@ namespace sph {
 // on the thread count. The cell order of the particles is returned as the list's visiting order.
 // [[gnu::flatten]]: every callee inlined at -O2 too (the tests' build), where GCC otherwise keeps
 // calls in the candidate loop: measured 0.040 s -> 0.021 s per search of 3e4 particles (-O3 0.019 s).
+//
+// The search's arrays (the sorted copies, the threads' lists, the list itself) are kept by the
+// caller from one search to the next (GridSearchBuffers): a run that searches every few steps then
+// does not allocate, zero and fault in tens of megabytes each time (measured: a fifth of evolve's
+// time at N = 125,000).
 template <int D>
-[[gnu::flatten]] NeighbourList grid_search(const std::vector<Vec<D>>& x, const std::vector<double>& h, const Box<D>& box) {
+struct GridSearchBuffers {
+  std::vector<std::array<int, D>> coord;
+  std::vector<std::int64_t> cell_of, start;
+  std::vector<int> sorted, owner;
+  std::vector<Vec<D>> xs;
+  std::vector<double> hs;
+  std::vector<std::size_t> local, extra;
+  std::vector<std::vector<int>> parts;                      // each thread's lists
+  std::vector<std::vector<std::array<int, 2>>> missed;      // each thread's pairs for the other end
+};
+
+// The search into nl, with buffers kept from the last search (the list's own arrays as well).
+template <int D>
+[[gnu::flatten]] void grid_search(const std::vector<Vec<D>>& x, const std::vector<double>& h, const Box<D>& box,
+                                  NeighbourList& nl, GridSearchBuffers<D>& buf) {
   const std::size_t n = x.size();
-  NeighbourList nl;
   nl.offset.assign(n + 1, 0);
-  if (n == 0) return nl;
+  nl.j.clear();
+  nl.order.clear();
+  if (n == 0) return;
   const double hmax = *std::max_element(h.begin(), h.end());
   if (!(hmax > 0.0) || !std::isfinite(hmax))
     throw std::invalid_argument("grid search: support radius h must be > 0 and finite");
@@ -106,8 +126,10 @@ template <int D>
   };
 
   // Counting sort by cell; positions copied in that order (wrapped into a periodic box).
-  std::vector<std::array<int, D>> coord(n);
-  std::vector<std::int64_t> cell_of(n), start(ncell + 1, 0);
+  auto& [coord, cell_of, start, sorted, owner, xs, hs, local, extra, parts, missed] = buf;
+  coord.resize(n);
+  cell_of.resize(n);
+  start.assign(ncell + 1, 0);
   for (std::size_t i = 0; i < n; ++i) {
     for (int d = 0; d < D; ++d) {
       double xd = x[i][d] - lo[d];
@@ -118,9 +140,9 @@ template <int D>
     ++start[cell_of[i] + 1];
   }
   for (std::int64_t c = 0; c < ncell; ++c) start[c + 1] += start[c];
-  std::vector<int> sorted(n);
-  std::vector<Vec<D>> xs(n);
-  std::vector<double> hs(n);
+  sorted.resize(n);
+  xs.resize(n);
+  hs.resize(n);
   {
     std::vector<std::int64_t> fill(start.begin(), start.end() - 1);
     for (std::size_t i = 0; i < n; ++i) {
@@ -187,19 +209,21 @@ template <int D>
   // order (h_j <= |r_ij| < h_i). Candidates are appended without a branch: each is written, and
   // the end of the list advances only if it is kept (a kept/rejected test mispredicts about a
   // third of the time).
-  std::vector<std::vector<int>> parts;
-  std::vector<std::vector<std::array<int, 2>>> missed;
-  std::vector<int> owner(n);
-  std::vector<std::size_t> local(n);
+  owner.resize(n);
+  local.resize(n);
+  std::size_t team = 1;  // threads of this search (the buffers may have more, from an earlier one)
 #pragma omp parallel if (n >= parallel_threshold)
   {
     const int nt = omp_get_num_threads(), t = omp_get_thread_num();
 #pragma omp single
-    parts.resize(nt), missed.resize(nt);
+    {
+      team = static_cast<std::size_t>(nt);
+      if (parts.size() < team) parts.resize(team), missed.resize(team);
+    }
     const std::size_t first = n * t / nt, last = n * (t + 1) / nt;
     std::vector<int>& js = parts[t];
     std::vector<std::array<int, 2>>& mt = missed[t];
-    js.resize((last - first) * 64);
+    js.resize(std::max(js.size(), (last - first) * 64));
     std::size_t used = 0, nm = 0;
     std::vector<Run> sten;
     std::int64_t sten_of = -1;
@@ -240,30 +264,44 @@ template <int D>
     mt.resize(nm);
   }
   // The missed pairs, counted per receiving particle in visiting order (threads' ranges in order).
-  std::vector<std::size_t> extra(n + 1, 0);
-  for (const auto& mt : missed)
-    for (const auto& jm : mt) ++extra[jm[0] + 1];
+  extra.assign(n + 1, 0);
+  for (std::size_t t = 0; t < team; ++t)
+    for (const auto& jm : missed[t]) ++extra[jm[0] + 1];
   for (std::size_t i = 0; i < n; ++i) extra[i + 1] += extra[i];
   for (std::size_t i = 0; i < n; ++i) nl.offset[i + 1] += nl.offset[i] + (extra[i + 1] - extra[i]);
   nl.j.resize(nl.offset[n]);
   {
     std::vector<std::size_t> fill(n);
     for (std::size_t i = 0; i < n; ++i) fill[i] = nl.offset[i + 1] - (extra[i + 1] - extra[i]);
-    for (const auto& mt : missed)
-      for (const auto& jm : mt) nl.j[fill[jm[0]]++] = jm[1];
+    for (std::size_t t = 0; t < team; ++t)
+      for (const auto& jm : missed[t]) nl.j[fill[jm[0]]++] = jm[1];
   }
 #pragma omp parallel for schedule(static) if (n >= parallel_threshold)
   for (std::size_t i = 0; i < n; ++i)
     std::copy_n(parts[owner[i]].begin() + local[i], nl.offset[i + 1] - nl.offset[i] - (extra[i + 1] - extra[i]),
                 nl.j.begin() + nl.offset[i]);
-  nl.order = std::move(sorted);
+  nl.order.swap(sorted);  // the last order's array becomes the next search's buffer
+}
+
+// A search with buffers of its own (a run that searches again keeps them: VerletList).
+template <int D>
+NeighbourList grid_search(const std::vector<Vec<D>>& x, const std::vector<double>& h, const Box<D>& box) {
+  NeighbourList nl;
+  GridSearchBuffers<D> buf;
+  grid_search<D>(x, h, box, nl, buf);
   return nl;
 }
 
 // Compiled once, in sph/grid_search.cpp, instead of in each of the ~40 files that search
 // (about 0.9 s of compile time each per dimension, measured).
+extern template void grid_search<1>(const std::vector<Vec<1>>&, const std::vector<double>&, const Box<1>&,
+                                       NeighbourList&, GridSearchBuffers<1>&);
 extern template NeighbourList grid_search<1>(const std::vector<Vec<1>>&, const std::vector<double>&, const Box<1>&);
+extern template void grid_search<2>(const std::vector<Vec<2>>&, const std::vector<double>&, const Box<2>&,
+                                       NeighbourList&, GridSearchBuffers<2>&);
 extern template NeighbourList grid_search<2>(const std::vector<Vec<2>>&, const std::vector<double>&, const Box<2>&);
+extern template void grid_search<3>(const std::vector<Vec<3>>&, const std::vector<double>&, const Box<3>&,
+                                       NeighbourList&, GridSearchBuffers<3>&);
 extern template NeighbourList grid_search<3>(const std::vector<Vec<3>>&, const std::vector<double>&, const Box<3>&);
 
 }  // namespace sph

@@ -58,14 +58,14 @@ class VerletList {
   }
 
   void search(const std::vector<Vec<D>>& x, const std::vector<double>& h, const Box<D>& box) {
-    std::vector<double> reach = h;
     const double widest = h.empty() ? 0.0 : (1.0 + skin_) * *std::max_element(h.begin(), h.end());
     const Vec<D> L = box.length();
     used_skin_ = skin_;
     for (int d = 0; d < D; ++d)
       if (box.periodic[d] && widest > 0.5 * L[d]) used_skin_ = 0.0;
-    for (double& r : reach) r *= 1.0 + used_skin_;
-    list_ = grid_search<D>(x, reach, box);
+    reach_.resize(h.size());
+    for (std::size_t k = 0; k < h.size(); ++k) reach_[k] = (1.0 + used_skin_) * h[k];
+    grid_search<D>(x, reach_, box, list_, buffers_);
     x0_ = x, h0_ = h, box_ = box;
     ++searches_;
   }
@@ -117,6 +117,8 @@ class VerletList {
   double skin_, used_skin_ = 0.0;
   NeighbourList list_, active_;
   std::vector<std::vector<int>> parts_;  // select's buffers, one a thread
+  GridSearchBuffers<D> buffers_;          // the search's, kept likewise
+  std::vector<double> reach_;             // the padded radii searched
   std::vector<Vec<D>> x0_;
   std::vector<double> h0_;
   Box<D> box_;
