@@ -10,9 +10,8 @@ namespace sph {
 template <int D>
 void density_summation(Particles<D>& p, const NeighbourList& nl, const Box<D>& box) {
   using K = CubicSpline<D>;
-  sum_over_pairs<D, double>(
-      p.x, p.h, nl, box,
-      [&](double& rho, std::size_t, int j, const Vec<D>&, double r, double h) { rho += p.m[j] * K::W(r, h); },
+  sum_weights_over_pairs<D>(
+      p.x, p.h, nl, box, [&](int j, double r, double h) { return p.m[j] * K::W(r, h); },
       [&](std::size_t i, double rho) { p.rho[i] = p.m[i] * K::W(0.0, p.h[i]) + rho; });
 }
 

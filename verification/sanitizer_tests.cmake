@@ -19,7 +19,7 @@ add_executable(sphv_sanitized_tests ${_tests} verification/tests/sanitizer/optio
 target_link_libraries(sphv_sanitized_tests PRIVATE harness_input_sanitized catch_main)
 target_compile_definitions(sphv_sanitized_tests PRIVATE SPHV_SOURCE_DIR="${CMAKE_SOURCE_DIR}" SPHV_EXE="$<TARGET_FILE:sphv>" SPHV_SANITIZED)
 foreach(_target harness_input_sanitized sphv_sanitized_tests)
-  target_compile_options(${_target} PRIVATE ${SPHV_WARNINGS} ${SPHV_SANITIZER_FLAGS} -O0 -g1)
+  target_compile_options(${_target} PRIVATE ${SPHV_FP_FLAGS} ${SPHV_WARNINGS} ${SPHV_SANITIZER_FLAGS} -O0 -g1)
   target_link_options(${_target} PRIVATE ${SPHV_SANITIZER_FLAGS})
 endforeach()
 # Runtime options: compiled in (verification/tests/sanitizer/options.cpp).
