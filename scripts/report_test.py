@@ -85,7 +85,7 @@ def main():
         shutil.copytree(results, dirty)
         f = next(dirty.glob("**/sweep.json"))
         s = json.loads(f.read_text())
-        s["runs"][0]["provenance"]["source_tree"] = {"dirty": True, "changes": [" M sph/kernel.hpp"]}
+        s["runs"][0]["provenance"]["source_tree"] = {"dirty": True, "changes": [" M sph/kernel/cubic_spline.hpp"]}
         f.write_text(json.dumps(s))
         res = report(dirty, work, "--bundle", str(work / "bundle"))
         expect(res.returncode == 2 and "uncommitted changes" in res.stderr, f"dirty results bundled: exit {res.returncode} {res.stderr}")

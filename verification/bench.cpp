@@ -14,11 +14,11 @@
 #include <CLI/CLI.hpp>
 
 #include "reference/direct_sum.hpp"
-#include "sph/density.hpp"
-#include "sph/gravity_tree.hpp"
-#include "sph/grid_search.hpp"
-#include "sph/lattice.hpp"
-#include "sph/tree.hpp"
+#include "sph/core/lattice.hpp"
+#include "sph/density/summation.hpp"
+#include "sph/gravity/tree_gravity.hpp"
+#include "sph/search/grid_search.hpp"
+#include "sph/search/tree.hpp"
 #include "verification/bench_hydro.hpp"
 #include "verification/params.hpp"
 #include "verification/peak.hpp"

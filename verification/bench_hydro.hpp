@@ -1,30 +1,32 @@
 #pragma once
 // The hydro part of `sphv bench`: the force loop of the Sod scene's matched pair (26)/(42)
 // with artificial viscosity, and a full kick-drift-kick step: `evolve`'s own (Courant step,
-// neighbour lists reused while they cover, sph/hydro.hpp), and with a fresh search every step.
+// neighbour lists reused while they cover, sph/hydro/evolve.hpp), and with a fresh search every
+// step.
 #include <chrono>
 #include <functional>
 #include <random>
 #include <stdexcept>
 
-#include "sph/energy.hpp"
-#include "sph/eos.hpp"
-#include "sph/euler.hpp"
-#include "sph/grid_search.hpp"
-#include "sph/hydro_density.hpp"
-#include "sph/hydro.hpp"
-#include "sph/integrator.hpp"
-#include "sph/verdict.hpp"
-#include "sph/viscosity.hpp"
+#include "sph/core/verdict.hpp"
+#include "sph/density/terms.hpp"
+#include "sph/hydro/energy.hpp"
+#include "sph/hydro/eos.hpp"
+#include "sph/hydro/euler.hpp"
+#include "sph/hydro/evolve.hpp"
+#include "sph/hydro/viscosity.hpp"
+#include "sph/search/grid_search.hpp"
+#include "sph/time/leapfrog.hpp"
 
 namespace sphv {
 
 // Floating-point operations of one force pair of the bench's scene, counted from the source (a
 // division or square root counts as one, min/max and compares as none): the pair geometry (r_ij,
-// nearest image, |r_ij|, h_ij; pairs.hpp, box.hpp) 26, grad W (kernel.hpp) 17, Euler (26) 12,
-// energy (42) 12, viscosity (44)-(48) 32. That is 99 once the repeated subexpressions are computed
-// once (the energy's P_ij is the Euler's; v_ij, v_ij . grad W and m_j / 2 are shared by the energy
-// and the viscosity); 113 as written. The lower count keeps the share of peak from overstating.
+// nearest image, |r_ij|, h_ij; sph/hydro/pairs.hpp, sph/core/box.hpp) 26, grad W
+// (sph/kernel/cubic_spline.hpp) 17, Euler (26) 12, energy (42) 12, viscosity (44)-(48) 32. That is
+// 99 once the repeated subexpressions are computed once (the energy's P_ij is the Euler's; v_ij,
+// v_ij . grad W and m_j / 2 are shared by the energy and the viscosity); 113 as written. The lower
+// count keeps the share of peak from overstating.
 constexpr double force_pair_flops = 99.0;
 
 struct HydroTimes {
@@ -58,8 +60,8 @@ inline HydroTimes time_hydro_step(sph::Particles<3>& p, const sph::Box<3>& box,
   };
   derivs(p, d);
   t.step_fresh_search = timer([&] { kdk_leapfrog_step(p, d, 1e-4, derivs); });
-  // A step as evolve takes it (sph/hydro.hpp: Courant step, lists reused while they cover, the
-  // verdict's check): evolve itself, run for 1 and for 1 + 8 steps from the same state; the
+  // A step as evolve takes it (sph/hydro/evolve.hpp: Courant step, lists reused while they cover,
+  // the verdict's check): evolve itself, run for 1 and for 1 + 8 steps from the same state; the
   // difference over 8 leaves out the start (first evaluation and search). Both are timed alike,
   // once each, after an untimed run that pays the process's first touch of the buffers (a cold
   // first run took 1.03 s against 0.52 s warm at N = 125,000 on one thread, and made the difference

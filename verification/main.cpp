@@ -15,16 +15,16 @@
 #include <thread>
 #include <unistd.h>
 
-#include "sph/isa.hpp"
+#include "sph/core/isa.hpp"
 #include "verification/allocator.hpp"
-#include "verification/case.hpp"
 #include "verification/baseline.hpp"
 #include "verification/bench.hpp"
+#include "verification/case.hpp"
 #include "verification/cost.hpp"
 #include "verification/gravity_command.hpp"
+#include "verification/ic.hpp"
 #include "verification/junit.hpp"
 #include "verification/mpi.hpp"
-#include "verification/ic.hpp"
 #include "verification/runner.hpp"
 #include "verification/score.hpp"
 #include "verification/snapshot/convert_command.hpp"

@@ -17,9 +17,9 @@
 #include <thread>
 
 #include "build_info.hpp"
-#include "sph/isa.hpp"
-#include "verification/cost.hpp"
+#include "sph/core/isa.hpp"
 #include "verification/build_id.hpp"
+#include "verification/cost.hpp"
 #include "verification/mpi.hpp"
 
 extern char** environ;
@@ -33,7 +33,7 @@ double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock:
 
 // The point's result when one exists that this exact build produced with these parameters:
 // same executable bytes (SHA-256 of `exe`, the binary that runs the points), build flags and
-// instruction-set path (sph/isa.hpp: SPHV_ISA or another CPU changes the round-off).
+// instruction-set path (sph/core/isa.hpp: SPHV_ISA or another CPU changes the round-off).
 // A commit alone does not say what ran: an uncommitted edit or another flag rebuilds the binary.
 std::optional<Result> finished(const Point& pt, const Params& p, const std::string& exe_sha256) {
   const auto file = pt.dir / "result.json";

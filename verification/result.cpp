@@ -13,7 +13,7 @@
 #include <thread>
 
 #include "build_info.hpp"
-#include "sph/isa.hpp"
+#include "sph/core/isa.hpp"
 #include "verification/build_id.hpp"
 
 namespace sphv {

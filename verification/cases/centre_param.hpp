@@ -5,7 +5,7 @@
 #include <cmath>
 #include <string>
 
-#include "sph/vec.hpp"
+#include "sph/core/vec.hpp"
 #include "verification/params.hpp"
 
 namespace sphv::radial {

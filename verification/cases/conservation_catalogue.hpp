@@ -4,9 +4,9 @@
 #include <string>
 #include <vector>
 
-#include "sph/eos.hpp"
-#include "sph/hydro_density.hpp"
-#include "sph/viscosity.hpp"
+#include "sph/density/terms.hpp"
+#include "sph/hydro/eos.hpp"
+#include "sph/hydro/viscosity.hpp"
 #include "verification/cases/conservation_forms.hpp"
 #include "verification/cases/conservation_scene.hpp"
 

@@ -1,11 +1,11 @@
 #pragma once
 // The Euler forms (22), (23), (25), (26) and energy forms (37), (38), (40), (41), (42) (and the
 // symmetric energy form with (25)'s P_ij) of the conservation catalogue, by name; each is
-// dispatched once to its scene term type by sph/hydro_forms.hpp.
+// dispatched once to its scene term type by sph/hydro/forms.hpp.
 #include <string>
 #include <vector>
 
-#include "sph/hydro_forms.hpp"
+#include "sph/hydro/forms.hpp"
 
 namespace sphv::conservation {
 

@@ -17,12 +17,12 @@
 #include <limits>
 #include <map>
 
-#include "sph/eos.hpp"
-#include "sph/euler.hpp"
-#include "sph/hydro_density.hpp"
+#include "sph/density/terms.hpp"
+#include "sph/hydro/eos.hpp"
+#include "sph/hydro/euler.hpp"
 #include "verification/case.hpp"
-#include "verification/cases/measured_bound.hpp"
 #include "verification/cases/conservation_scene.hpp"
+#include "verification/cases/measured_bound.hpp"
 #include "verification/sweep.hpp"
 
 namespace sphv {

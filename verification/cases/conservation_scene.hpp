@@ -11,11 +11,11 @@
 
 #include <Eigen/Dense>
 
-#include "sph/density.hpp"
-#include "sph/grid_search.hpp"
-#include "sph/hydro.hpp"
-#include "sph/hydro_smoothing_length.hpp"
-#include "sph/verdict.hpp"
+#include "sph/core/verdict.hpp"
+#include "sph/density/summation.hpp"
+#include "sph/density/variable_h.hpp"
+#include "sph/hydro/evolve.hpp"
+#include "sph/search/grid_search.hpp"
 
 namespace sphv::conservation {
 

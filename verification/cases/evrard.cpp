@@ -1,16 +1,16 @@
 // Case `evrard`: the adiabatic collapse of a cold gas sphere (Evrard 1988) in 3D, SPH with
-// self-gravity from the Barnes-Hut tree (sph/self_gravity.hpp) as a scene term. G = M = R = 1,
-// rho(r) = M / (2 pi R^2 r), u = 0.05 G M / R, at rest. The sphere falls in, bounces at t ~ 1
-// and an outgoing shock heats it (virialisation). Errors: conservation of the total energy
-// E = E_kin + E_th + W through the bounce, the energy curves against an independent 1D
-// spherical Lagrangian solver (reference/evrard_lagrangian), sampled at common times, and the
+// self-gravity from the Barnes-Hut tree (sph/gravity/self_gravity.hpp) as a scene term.
+// G = M = R = 1, rho(r) = M / (2 pi R^2 r), u = 0.05 G M / R, at rest. The sphere falls in,
+// bounces at t ~ 1 and an outgoing shock heats it (virialisation). Errors: conservation of the
+// total energy E = E_kin + E_th + W through the bounce, the energy curves against an independent
+// 1D spherical Lagrangian solver (reference/evrard_lagrangian), sampled at common times, and the
 // profiles of density, radial velocity and u at t_end against that solver's (evrard_errors.hpp,
 // which `sphv score evrard` shares).
 #include <algorithm>
 #include <cmath>
 
 #include "reference/interpolate.hpp"
-#include "sph/self_gravity.hpp"
+#include "sph/gravity/self_gravity.hpp"
 #include "verification/case.hpp"
 #include "verification/cases/centre_param.hpp"
 #include "verification/cases/evrard_errors.hpp"

@@ -12,7 +12,7 @@
 
 #include "reference/evrard_lagrangian.hpp"
 #include "reference/interpolate.hpp"
-#include "sph/vec.hpp"
+#include "sph/core/vec.hpp"
 #include "verification/result.hpp"
 
 namespace sphv::evrard {

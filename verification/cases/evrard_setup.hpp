@@ -7,7 +7,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "sph/lattice.hpp"
+#include "sph/core/lattice.hpp"
 
 namespace sphv::evrard {
 

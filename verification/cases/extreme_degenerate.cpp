@@ -1,6 +1,6 @@
 // Case `extreme_degenerate`: degenerate inputs that must end with a verdict, never a crash or a
 // NaN. kind = isolated: one particle with no neighbour; its density is the self-density (49)
-// m W(0, h) with h at the cap h_max (sph/smoothing_length.hpp), and it must stay at rest.
+// m W(0, h) with h at the cap h_max (sph/density/fixed_neighbours.hpp), and it must stay at rest.
 // kind = coincident: a periodic 2D lattice at rest with one particle duplicated on top of
 // another (r_ij = 0, grad W = 0). kind = contrast: a 1D periodic gas at rest in pressure
 // equilibrium whose density jumps by `contrast` (masses, same spacing); the exact solution is

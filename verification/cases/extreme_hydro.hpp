@@ -14,24 +14,24 @@
 #include <string>
 #include <vector>
 
-#include "sph/energy.hpp"
-#include "sph/eos.hpp"
-#include "sph/euler.hpp"
-#include "sph/hydro.hpp"
-#include "sph/hydro_density.hpp"
-#include "sph/hydro_forms.hpp"
-#include "sph/hydro_smoothing_length.hpp"
-#include "sph/lattice.hpp"
-#include "sph/smoothing_length.hpp"
-#include "verification/params.hpp"
+#include "sph/core/lattice.hpp"
+#include "sph/density/fixed_neighbours.hpp"
+#include "sph/density/terms.hpp"
+#include "sph/density/variable_h.hpp"
+#include "sph/hydro/energy.hpp"
+#include "sph/hydro/eos.hpp"
+#include "sph/hydro/euler.hpp"
+#include "sph/hydro/evolve.hpp"
+#include "sph/hydro/forms.hpp"
 #include "verification/cases/hydro_step_params.hpp"
 #include "verification/cases/sod_tube.hpp"
+#include "verification/params.hpp"
 #include "verification/result.hpp"
 
 namespace sphv::extreme {
 
 // Smoothing length: "iterate50" sets h by (50) iterated with the density after every step
-// (sph/smoothing_length.hpp); "rate53" integrates (53); "fixed" keeps the initial h.
+// (sph/density/fixed_neighbours.hpp); "rate53" integrates (53); "fixed" keeps the initial h.
 struct Method {
   double gamma = 5.0 / 3.0;
   double hfact = 2.4;

@@ -6,7 +6,7 @@
 #include <map>
 #include <string>
 
-#include "sph/gravity_tree.hpp"
+#include "sph/gravity/tree_gravity.hpp"
 #include "verification/case.hpp"
 #include "verification/cases/gravity_compare.hpp"
 #include "verification/cases/gravity_models.hpp"

@@ -12,7 +12,7 @@
 
 #include "reference/direct_sum.hpp"
 #include "reference/potentials.hpp"
-#include "sph/gravity_tree.hpp"
+#include "sph/gravity/tree_gravity.hpp"
 #include "verification/case.hpp"
 #include "verification/cases/gravity_compare.hpp"
 #include "verification/cases/gravity_models.hpp"

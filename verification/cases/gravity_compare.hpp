@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "reference/direct_sum.hpp"
-#include "sph/gravity_tree.hpp"
+#include "sph/gravity/tree_gravity.hpp"
 
 namespace sphv::gravity {
 

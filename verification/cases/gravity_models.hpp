@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "sph/vec.hpp"
+#include "sph/core/vec.hpp"
 #include "verification/params.hpp"
 
 namespace sphv::gravity {

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "sph/gravity_tree.hpp"
+#include "sph/gravity/tree_gravity.hpp"
 #include "verification/case.hpp"
 #include "verification/cases/gravity_compare.hpp"
 #include "verification/cases/gravity_models.hpp"

@@ -8,11 +8,11 @@
 #include <string>
 #include <vector>
 
-#include "sph/density.hpp"
-#include "sph/grid_search.hpp"
-#include "sph/kernel.hpp"
-#include "sph/lattice.hpp"
-#include "sph/scene.hpp"
+#include "sph/core/lattice.hpp"
+#include "sph/density/summation.hpp"
+#include "sph/hydro/scene.hpp"
+#include "sph/kernel/cubic_spline.hpp"
+#include "sph/search/grid_search.hpp"
 
 namespace sphv::heat {
 

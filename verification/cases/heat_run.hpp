@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "reference/cvode.hpp"
-#include "sph/conduction.hpp"
-#include "sph/explicit_integrators.hpp"
+#include "sph/conduction/conduction.hpp"
+#include "sph/time/explicit_methods.hpp"
 #include "verification/cases/heat_lattice.hpp"
 #include "verification/params.hpp"
 

@@ -4,7 +4,7 @@
 // criterion, or the chapter's (43)), the Courant number C and eta of (43).
 #include <vector>
 
-#include "sph/timestep.hpp"
+#include "sph/time/timestep.hpp"
 #include "verification/params.hpp"
 
 namespace sphv {

@@ -5,10 +5,10 @@
 #include <numbers>
 
 #include "reference/fields.hpp"
-#include "sph/density.hpp"
-#include "sph/grid_search.hpp"
-#include "sph/interpolation.hpp"
-#include "sph/lattice.hpp"
+#include "sph/core/lattice.hpp"
+#include "sph/density/summation.hpp"
+#include "sph/kernel/interpolation.hpp"
+#include "sph/search/grid_search.hpp"
 #include "verification/case.hpp"
 #include "verification/cases/heat_lattice.hpp"
 #include "verification/sweep.hpp"

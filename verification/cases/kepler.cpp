@@ -8,8 +8,8 @@
 #include <numbers>
 
 #include "reference/potentials.hpp"
-#include "sph/gravity_point_mass.hpp"
-#include "sph/integrator.hpp"
+#include "sph/gravity/point_mass.hpp"
+#include "sph/time/leapfrog.hpp"
 #include "verification/case.hpp"
 #include "verification/cases/measured_bound.hpp"
 #include "verification/sweep.hpp"

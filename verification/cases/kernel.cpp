@@ -5,7 +5,7 @@
 #include <numbers>
 
 #include "reference/quadrature.hpp"
-#include "sph/kernel.hpp"
+#include "sph/kernel/cubic_spline.hpp"
 #include "verification/case.hpp"
 #include "verification/sweep.hpp"
 

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "sph/laplacian.hpp"
+#include "sph/kernel/laplacian.hpp"
 #include "verification/case.hpp"
 #include "verification/cases/heat_lattice.hpp"
 #include "verification/sweep.hpp"

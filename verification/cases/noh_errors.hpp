@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "reference/noh.hpp"
-#include "sph/vec.hpp"
+#include "sph/core/vec.hpp"
 #include "verification/cases/extreme_hydro.hpp"
 #include "verification/cases/radial_result.hpp"
 

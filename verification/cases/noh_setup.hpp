@@ -4,7 +4,7 @@
 #include <cmath>
 #include <string>
 
-#include "sph/lattice.hpp"
+#include "sph/core/lattice.hpp"
 #include "verification/cases/noh_errors.hpp"
 #include "verification/params.hpp"
 

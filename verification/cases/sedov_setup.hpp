@@ -3,8 +3,8 @@
 // of density rho0 in the periodic box [-0.5, 0.5]^d with the blast centre at the origin; every
 // particle has u_ambient, and the energy E is shared by kernel weight W(r, r_b) among those
 // within r_b = r_blast R_target of the centre (see sedov.cpp for why r_b is a fraction of R).
-#include "sph/kernel.hpp"
-#include "sph/lattice.hpp"
+#include "sph/core/lattice.hpp"
+#include "sph/kernel/cubic_spline.hpp"
 #include "verification/cases/sedov_errors.hpp"
 
 namespace sphv::sedov {

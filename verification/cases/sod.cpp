@@ -6,7 +6,7 @@
 #include <cmath>
 #include <map>
 
-#include "sph/hydro_forms.hpp"
+#include "sph/hydro/forms.hpp"
 #include "verification/case.hpp"
 #include "verification/cases/hydro_step_params.hpp"
 #include "verification/cases/sod_errors.hpp"

@@ -4,10 +4,10 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "sph/eos.hpp"
-#include "sph/hydro_density.hpp"
-#include "sph/hydro_forms.hpp"
-#include "sph/hydro_smoothing_length.hpp"
+#include "sph/density/terms.hpp"
+#include "sph/density/variable_h.hpp"
+#include "sph/hydro/eos.hpp"
+#include "sph/hydro/forms.hpp"
 #include "verification/cases/sod_tube.hpp"
 
 namespace sphv {

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "reference/riemann.hpp"
-#include "sph/hydro.hpp"
+#include "sph/hydro/evolve.hpp"
 
 namespace sphv {
 

@@ -8,7 +8,7 @@
 
 #include "reference/direct_sum.hpp"
 #include "reference/evrard_lagrangian.hpp"
-#include "sph/self_gravity.hpp"
+#include "sph/gravity/self_gravity.hpp"
 #include "verification/sweep.hpp"
 
 TEST_CASE("self-gravity scene term against the direct sum", "[evrard][gravity]") {

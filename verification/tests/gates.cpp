@@ -9,7 +9,7 @@
 #include <set>
 #include <sstream>
 
-#include "sph/threads.hpp"
+#include "sph/core/threads.hpp"
 #include "verification/sweep.hpp"
 
 namespace {
@@ -24,7 +24,7 @@ struct Threads {
 // One thread: the gate scenes are small (at most a few thousand particles) and run many short
 // pair loops, where a fork-join per loop costs more than it gains, above all when ctest runs
 // tests side by side (measured: conservation 24 s on one thread against 105 s on two, loaded).
-// Results do not depend on the thread count (sph/pairs.hpp).
+// Results do not depend on the thread count (sph/hydro/pairs.hpp).
 struct OneThread : Threads {
   OneThread() : Threads(1) {}
 };
@@ -41,7 +41,7 @@ std::string differences(const std::map<std::string, double>& a, const std::map<s
   return o.str();
 }
 
-// Thread-count independence (sph/pairs.hpp: each particle's sums in a fixed order, whatever
+// Thread-count independence (sph/hydro/pairs.hpp: each particle's sums in a fixed order, whatever
 // thread computes them): the sweep's smallest level, run on one thread, again on two threads
 // gives the same verdict, errors and functionals bit for bit. Gate scenes are mostly smaller than
 // sph::parallel_threshold, so the second run lowers it to 0 and every threaded loop forks. Not for

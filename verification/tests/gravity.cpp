@@ -4,11 +4,11 @@
 #include <cmath>
 #include <random>
 
-#include "sph/grid_search.hpp"
-#include "sph/gravity_point_mass.hpp"
-#include "sph/gravity_tree.hpp"
-#include "sph/tree.hpp"
-#include "sph/tree_search.hpp"
+#include "sph/gravity/point_mass.hpp"
+#include "sph/gravity/tree_gravity.hpp"
+#include "sph/search/grid_search.hpp"
+#include "sph/search/tree.hpp"
+#include "sph/search/tree_search.hpp"
 #include "verification/cases/gravity_compare.hpp"
 #include "verification/cases/gravity_models.hpp"
 #include "verification/sweep.hpp"

@@ -1,7 +1,7 @@
 // The grid search returns exactly the pairs of a brute-force O(N^2) search at the nearest
 // image, for periodic and open boxes, constant and variable h, a few particles far wider than the
 // rest (cells follow the median h), few cells per axis, and on more threads in the same order; and
-// lists reused across steps (verlet_list.hpp) still hold every pair.
+// lists reused across steps (sph/search/verlet_list.hpp) still hold every pair.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -9,8 +9,8 @@
 
 #include <omp.h>
 
-#include "sph/grid_search.hpp"
-#include "sph/verlet_list.hpp"
+#include "sph/search/grid_search.hpp"
+#include "sph/search/verlet_list.hpp"
 
 namespace {
 
@@ -107,8 +107,8 @@ void verlet_steps(std::size_t n, bool periodic, double h0, double speed, double 
 
 }  // namespace
 
-// verlet_list.hpp's reuse conditions (a) (each particle within half its skin) and (b) (2 d_max
-// and h's growth within the skin) against a brute-force search at every step.
+// sph/search/verlet_list.hpp's reuse conditions (a) (each particle within half its skin) and
+// (b) (2 d_max and h's growth within the skin) against a brute-force search at every step.
 TEST_CASE("reused neighbour lists hold every pair of a brute-force search", "[neighbours]") {
   for (bool periodic : {true, false}) {
     verlet_steps<2>(1200, periodic, 0.04, 0.008, 0.0, 11);    // streams at constant h: (a)

@@ -4,11 +4,11 @@
 #include <cmath>
 
 #include "reference/cvode.hpp"
-#include "sph/conduction.hpp"
-#include "sph/density.hpp"
-#include "sph/grid_search.hpp"
-#include "sph/hydro_smoothing_length.hpp"
-#include "sph/lattice.hpp"
+#include "sph/conduction/conduction.hpp"
+#include "sph/core/lattice.hpp"
+#include "sph/density/summation.hpp"
+#include "sph/density/variable_h.hpp"
+#include "sph/search/grid_search.hpp"
 #include "verification/sweep.hpp"
 
 TEST_CASE("heat: bad input is refused", "[heat][input]") {

@@ -6,16 +6,16 @@
 #include <cmath>
 #include <random>
 
-#include "sph/energy.hpp"
-#include "sph/eos.hpp"
-#include "sph/euler.hpp"
-#include "sph/hydro.hpp"
-#include "sph/hydro_density.hpp"
-#include "sph/hydro_smoothing_length.hpp"
-#include "sph/isa.hpp"
-#include "sph/lattice.hpp"
-#include "sph/smoothing_length.hpp"
-#include "sph/verdict.hpp"
+#include "sph/core/isa.hpp"
+#include "sph/core/lattice.hpp"
+#include "sph/core/verdict.hpp"
+#include "sph/density/fixed_neighbours.hpp"
+#include "sph/density/terms.hpp"
+#include "sph/density/variable_h.hpp"
+#include "sph/hydro/energy.hpp"
+#include "sph/hydro/eos.hpp"
+#include "sph/hydro/euler.hpp"
+#include "sph/hydro/evolve.hpp"
 #include "verification/sweep.hpp"
 
 namespace {
@@ -117,8 +117,8 @@ struct PairRates {
 };
 }  // namespace
 
-// Run on each instruction-set path of the pair loops (sph/isa.hpp) this CPU supports: each must
-// equal the direct sums, whichever the harness picks.
+// Run on each instruction-set path of the pair loops (sph/core/isa.hpp) this CPU supports: each
+// must equal the direct sums, whichever the harness picks.
 TEST_CASE("hydro terms equal a direct sum of the chapter's (22)-(53) on a non-uniform gas", "[hydro]") {
   const sph::IsaPath path = GENERATE(sph::IsaPath::portable, sph::IsaPath::avx2);
   if (!sph::isa_supported(path)) {

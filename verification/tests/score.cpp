@@ -9,7 +9,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "sph/gravity_tree.hpp"
+#include "sph/gravity/tree_gravity.hpp"
 #include "verification/cases/gravity_compare.hpp"
 #include "verification/cases/gravity_models.hpp"
 #include "verification/ic.hpp"

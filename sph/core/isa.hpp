@@ -1,0 +1,50 @@
+#pragma once
+#include <cstdlib>
+#include <stdexcept>
+#include <string>
+
+namespace sph {
+
+// Instruction-set path of the pair loops (hydro/pairs.hpp). The loops of 2D and 3D scenes are
+// compiled twice, for the portable default and for x86-64 with AVX2 and FMA, and the path is chosen
+// once at run time: the fastest the CPU supports, or the one the environment variable SPHV_ISA
+// names ("portable" or "avx2"). FMA contraction rounds differently, so results are reproducible for
+// a given path (and thread count independent on each), and a run's provenance records the path.
+enum class IsaPath { portable, avx2 };
+
+inline const char* isa_name(IsaPath p) { return p == IsaPath::avx2 ? "avx2" : "portable"; }
+
+inline bool isa_supported(IsaPath p) {
+#if defined(__x86_64__) && defined(__GNUC__)
+  if (p == IsaPath::avx2) return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+#endif
+  return p == IsaPath::portable;
+}
+
+// The path named by SPHV_ISA, else the fastest supported. Throws std::invalid_argument for a name
+// that is not a path, or a path this CPU lacks.
+inline IsaPath isa_from_environment() {
+  const char* v = std::getenv("SPHV_ISA");
+  if (!v || !*v) return isa_supported(IsaPath::avx2) ? IsaPath::avx2 : IsaPath::portable;
+  const std::string s = v;
+  for (IsaPath p : {IsaPath::portable, IsaPath::avx2})
+    if (s == isa_name(p)) {
+      if (!isa_supported(p)) throw std::invalid_argument("SPHV_ISA=" + s + ": this CPU does not support it");
+      return p;
+    }
+  throw std::invalid_argument("SPHV_ISA=" + s + ": not an instruction-set path (portable or avx2)");
+}
+
+// The path every pair loop of this process takes: chosen at the first call, changed only by
+// set_isa_path (tests comparing the paths; not while a loop runs).
+inline IsaPath& isa_path_slot() {
+  static IsaPath p = isa_from_environment();
+  return p;
+}
+inline IsaPath isa_path() { return isa_path_slot(); }
+inline void set_isa_path(IsaPath p) {
+  if (!isa_supported(p)) throw std::invalid_argument(std::string("ISA path ") + isa_name(p) + " not supported here");
+  isa_path_slot() = p;
+}
+
+}  // namespace sph

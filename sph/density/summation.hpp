@@ -1,0 +1,18 @@
+#pragma once
+#include "sph/core/particles.hpp"
+#include "sph/hydro/pairs.hpp"
+#include "sph/kernel/cubic_spline.hpp"
+
+namespace sph {
+
+// Density by summation, eq (27): rho_i = sum_j m_j W_ij, including the self term m_i W_ii
+// (the self-density (49) is its floor).
+template <int D>
+void density_summation(Particles<D>& p, const NeighbourList& nl, const Box<D>& box) {
+  using K = CubicSpline<D>;
+  sum_weights_over_pairs<D>(
+      p.x, p.h, nl, box, [&](int j, double r, double h) { return p.m[j] * K::W(r, h); },
+      [&](std::size_t i, double rho) { p.rho[i] = p.m[i] * K::W(0.0, p.h[i]) + rho; });
+}
+
+}  // namespace sph

@@ -1,0 +1,29 @@
+#pragma once
+#include "sph/density/summation.hpp"
+#include "sph/hydro/scene.hpp"
+
+namespace sph {
+
+// Density methods of 9.2 as scene terms. List the density term first: the equation of state
+// and the force terms read rho.
+
+// Summation (27), recomputed from the positions before every pair loop.
+template <int D>
+struct SummationDensity {
+  void prepare(Particles<D>& p, const Neighbourhood<D>& nb) const { density_summation(p, nb.list, nb.box); }
+};
+
+// Continuity equation: rho is evolved by the integrator from drho/dt.
+enum class ContinuityForm { direct29, difference33 };
+
+template <int D, ContinuityForm F>
+struct ContinuityDensity {
+  void pair(const Particles<D>& p, PairSums<D>& s, const Pair<D>& q) const {
+    if constexpr (F == ContinuityForm::direct29)
+      s.drhodt -= p.m[q.j] * p.v[q.j].dot(q.gradW);  // (29)
+    else
+      s.drhodt -= p.m[q.j] * (p.v[q.j] - p.v[q.i]).dot(q.gradW);  // (33)
+  }
+};
+
+}  // namespace sph

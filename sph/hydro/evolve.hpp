@@ -1,0 +1,137 @@
+#pragma once
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+
+#include "sph/core/verdict.hpp"
+#include "sph/hydro/viscosity.hpp"
+#include "sph/search/verlet_list.hpp"
+#include "sph/time/leapfrog.hpp"
+#include "sph/time/timestep.hpp"
+
+namespace sph {
+
+// Time evolution of a hydrodynamic scene (9.3): neighbour lists for the particles' current
+// support radii (a scene term may evolve them, see density/variable_h.hpp), reused across
+// steps while they cover them (search/verlet_list.hpp); the scene's derivatives, an integrator of
+// 9.3.2 and a time-step criterion, with a verdict.
+
+enum class IntegratorKind { kdk, chapter };
+
+struct HydroControls {
+  IntegratorKind integrator = IntegratorKind::kdk;
+  TimeStepControl step;
+  double t_end = 0.2;
+  long max_steps = 1000000;
+  double skin = 0.1;  // neighbour lists padded by this fraction of h, reused while they cover (search/verlet_list.hpp)
+};
+
+struct HydroOutcome {
+  long steps = 0;
+  double t = 0.0;
+  std::string verdict = "ok";
+  long searches = 0;  // neighbour searches made (the lists serve while they cover, search/verlet_list.hpp)
+};
+
+// Total mass, momentum and energy sum_i m_i (v_i^2 / 2 + u_i) of particles [first, last), and
+// the rate (96) dE/dt = sum_i m_i (v_i . dv_i/dt + du_i/dt) with the scale
+// sum_i m_i (|v_i . dv_i/dt| + |du_i/dt|) that its round-off is measured against.
+template <int D>
+struct Totals {
+  double mass = 0.0, energy = 0.0, energy_rate = 0.0, rate_scale = 0.0, momentum_scale = 0.0;
+  Vec<D> momentum = Vec<D>::Zero();
+};
+template <int D>
+Totals<D> totals(const Particles<D>& p, const Derivatives<D>& d, std::size_t first, std::size_t last) {
+  Totals<D> t;
+  for (std::size_t i = first; i < last; ++i) {
+    t.mass += p.m[i];
+    t.momentum += p.m[i] * p.v[i];
+    t.momentum_scale += p.m[i] * p.v[i].norm();
+    t.energy += p.m[i] * (0.5 * p.v[i].squaredNorm() + p.u[i]);
+    const double kin = p.v[i].dot(d.dvdt[i]);
+    t.energy_rate += p.m[i] * (kin + d.dudt[i]);
+    t.rate_scale += p.m[i] * (std::abs(kin) + std::abs(d.dudt[i]));
+  }
+  return t;
+}
+
+// Optional hooks of a run: `constrain` imposes prescribed particles (e.g. boundary layers
+// held at a known state) after every step; `evaluated` sees every derivative evaluation with
+// the state it belongs to; `stepped` sees the state after every step (step count, time).
+template <int D>
+struct HydroHooks {
+  std::function<void(Particles<D>&, double)> constrain;
+  std::function<void(const Particles<D>&, const Derivatives<D>&)> evaluated;
+  std::function<void(const Particles<D>&, const Derivatives<D>&, long, double)> stepped;
+};
+
+// The rates of a scene at a state with its neighbourhood: all that evolve needs of a scene.
+template <int D>
+using SceneRates = std::function<void(Particles<D>&, const Neighbourhood<D>&, Derivatives<D>&)>;
+
+// evolve's loop, behind SceneRates: compiled once per dimension, not once per scene type (a case
+// choosing among 72 scenes would otherwise compile 72 copies of the integrators and this loop).
+// visc (may be null) sets the viscous signal speed of the Courant step.
+template <int D>
+HydroOutcome evolve_rates(const SceneRates<D>& rates, const ArtificialViscosity<D>* visc, Particles<D>& p,
+                          const Box<D>& box, const HydroControls& c, const HydroHooks<D>& hooks) {
+  Derivatives<D> d;
+  HydroOutcome out;
+  VerletList<D> lists(c.skin);
+  auto derivs = [&](Particles<D>& q, Derivatives<D>& dd) {
+    rates(q, Neighbourhood<D>{lists.update(q.x, q.h, box), box}, dd);
+    if (hooks.evaluated) hooks.evaluated(q, dd);
+  };
+  auto ended = [&] {
+    out.searches = lists.searches();
+    return out;
+  };
+  auto bad_state = [&](const std::string& what) {
+    out.verdict = "unstable: step " + std::to_string(out.steps) + " (t = " + std::to_string(out.t) + "): " + what;
+    return ended();
+  };
+  try {
+    if (auto b = first_bad(p)) return bad_state("initial state, particle " + std::to_string(b->particle) + ": " + b->what);
+    derivs(p, d);
+    while (out.t < c.t_end) {
+      if (out.steps >= c.max_steps)
+        return bad_state("step budget of " + std::to_string(c.max_steps) + " steps exhausted before t_end");
+      double dt = c.step.criterion == TimeStepCriterion::courant
+                      ? courant_time_step(p, d, visc ? visc->alpha : 0.0, visc ? visc->beta : 0.0, c.step)
+                      : chapter_time_step(p, c.step);
+      if (!(dt > 0.0) || !std::isfinite(dt)) return bad_state("time step not positive and finite");
+      dt = std::min(dt, c.t_end - out.t);
+      if (c.integrator == IntegratorKind::kdk) kdk_leapfrog_step(p, d, dt, derivs);
+      else chapter_leapfrog_step(p, d, dt, derivs);
+      ++out.steps;
+      out.t = (c.t_end - out.t <= dt) ? c.t_end : out.t + dt;
+      if (hooks.constrain) hooks.constrain(p, out.t);
+      if (auto b = first_bad(p)) {
+        out.verdict = unstable_verdict(out.steps, out.t, *b);
+        return ended();
+      }
+      if (hooks.stepped) hooks.stepped(p, d, out.steps, out.t);
+    }
+  } catch (const std::invalid_argument& e) {  // e.g. a support radius grown beyond a periodic box
+    return bad_state(e.what());
+  }
+  return ended();
+}
+
+// Advances the particles to c.t_end. Ends with "ok", or with the first step and particle where
+// the state went bad, or with the step budget exhausted; never throws on a blow-up.
+template <int D, class... Terms>
+HydroOutcome evolve(Scene<D, Terms...>& scene, Particles<D>& p, const Box<D>& box, const HydroControls& c,
+                    const HydroHooks<D>& hooks = {}) {
+  const ArtificialViscosity<D>* visc = nullptr;
+  if constexpr ((std::is_same_v<Terms, ArtificialViscosity<D>> || ...))
+    visc = &scene.template term<ArtificialViscosity<D>>();
+  auto rates = [&](Particles<D>& q, const Neighbourhood<D>& nb, Derivatives<D>& d) { scene.derivatives(q, nb, d); };
+  return evolve_rates<D>(rates, visc, p, box, c, hooks);
+}
+
+}  // namespace sph

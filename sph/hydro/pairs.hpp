@@ -1,0 +1,147 @@
+#pragma once
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+#include "sph/core/box.hpp"
+#include "sph/core/isa.hpp"
+#include "sph/core/threads.hpp"
+#include "sph/search/neighbour_list.hpp"
+
+namespace sph {
+
+// Symmetric smoothing length of a pair (errata, 9.4.4): h_ij = (h_i + h_j) / 2.
+inline double h_ij(double hi, double hj) { return 0.5 * (hi + hj); }
+
+// The pairs of one particle i: for every listed j that interacts with it (|r_ij| < h_ij: W_ij and
+// grad W_ij vanish beyond), f(acc, i, j, r_ij, |r_ij|, h_ij) with r_ij = r_i - r_j at the nearest
+// image adds pair j's share to acc (a local, so the sum stays in registers and no store inside the
+// loop can alias the particle data the next pair reads), then store(i, acc) writes i's outputs once.
+template <int D, class Acc, class F, class Store>
+inline void pairs_of(std::size_t i, const std::vector<Vec<D>>& x, const std::vector<double>& h, const NeighbourList& nl,
+                     const Vec<D>& L, const Vec<D>& wrap, F& f, Store& store) {
+  Acc acc{};
+  const Vec<D> xi = x[i];
+  const double hi = h[i];
+  for (int j : nl.of(i)) {
+    const Vec<D> rij = min_image<D>(xi - x[j], L, wrap);
+    const double r = rij.norm(), hij = h_ij(hi, h[j]);
+    if (r < hij) f(acc, i, j, rij, r, hij);
+  }
+  store(i, acc);
+}
+
+// The sum over i's listed pairs of g(j, |r_ij|, h_ij) for a g that vanishes for |r_ij| >= h_ij (a
+// kernel weight: W(r, h) = 0 beyond h, (6)). Shaped for SIMD: every listed pair is evaluated,
+// without pairs_of's test, in batches the compiler vectorises (gathers from one position array per
+// dimension, masks for the kernel's pieces), and the batch is then summed in list order, so the sum
+// does not depend on the vector width. 2.4x faster than pairs_of for the density (27) at N =
+// 125,000 on the AVX2 path (measured, 2.8 ns a pair); the portable path has no gathers and stays
+// scalar.
+template <int D>
+using Coordinates = std::array<std::vector<double>, D>;  // x_i[d] as xs[d][i]
+
+template <int D, class G>
+inline double weight_sum_of(std::size_t i, const Coordinates<D>& xs, const std::vector<double>& h,
+                            const NeighbourList& nl, const Vec<D>& L, const Vec<D>& wrap, G& g) {
+  constexpr int batch = 128;
+  double value[batch];
+  const int* js = nl.j.data() + nl.offset[i];
+  const int count = static_cast<int>(nl.offset[i + 1] - nl.offset[i]);
+  const double hi = h[i];
+  double sum = 0.0;
+  for (int t0 = 0; t0 < count; t0 += batch) {
+    const int nb = std::min(count - t0, batch);
+#pragma omp simd
+    for (int t = 0; t < nb; ++t) {
+      const int j = js[t0 + t];
+      double r2 = 0.0;
+      for (int d = 0; d < D; ++d) {
+        const double dx = min_image(xs[d][i] - xs[d][j], L[d], wrap[d]);
+        r2 += dx * dx;
+      }
+      value[t] = g(j, std::sqrt(r2), h_ij(hi, h[j]));
+    }
+    for (int t = 0; t < nb; ++t) sum += value[t];
+  }
+  return sum;
+}
+
+// visit(i) for the particles the loop visits k0 .. k1-1, in two copies (core/isa.hpp): portable, and
+// with AVX2 and FMA (1.4x on the 3D force loop). Flattened: every call inside (the pair loop, the
+// scene's terms, the kernel) is inlined and so compiled for the copy's instruction set; left to
+// GCC's heuristics, a term that many scenes use (the viscosity) stayed a portable call inside the
+// AVX2 loop, 10 % of a 3D step.
+template <class Visit>
+[[gnu::flatten]] void particles_in_portable(std::size_t k0, std::size_t k1, const NeighbourList& nl, Visit& visit) {
+  for (std::size_t k = k0; k < k1; ++k) visit(nl.visit(k));
+}
+#if defined(__x86_64__) && defined(__GNUC__)
+#define SPH_AVX2_COPY 1
+template <class Visit>
+[[gnu::flatten, gnu::target("avx2,fma")]] void particles_in_avx2(std::size_t k0, std::size_t k1,
+                                                                 const NeighbourList& nl, Visit& visit) {
+  for (std::size_t k = k0; k < k1; ++k) visit(nl.visit(k));
+}
+#endif
+
+// visit(i) for every particle i, in the list's visiting order, in chunks of 256 handed out to
+// threads as they come free. Each i is handled by one thread and writes only i's outputs, so the
+// result is independent of the thread count. 1D keeps the portable copy only: 1D runs are small,
+// and a second copy would cost compile time, not run time.
+template <int D, class Visit>
+void for_each_particle(std::size_t n, const NeighbourList& nl, Visit&& visit) {
+  constexpr std::size_t chunk = 256;
+  [[maybe_unused]] const bool avx2 = D >= 2 && isa_path() == IsaPath::avx2;
+#pragma omp parallel for schedule(dynamic) if (n >= parallel_threshold)
+  for (std::size_t k0 = 0; k0 < n; k0 += chunk) {
+    const std::size_t k1 = std::min(n, k0 + chunk);
+#ifdef SPH_AVX2_COPY
+    if constexpr (D >= 2)
+      if (avx2) {
+        particles_in_avx2(k0, k1, nl, visit);
+        continue;
+      }
+#endif
+    particles_in_portable(k0, k1, nl, visit);
+  }
+}
+
+// The pair loop over every particle i (pairs_of).
+template <int D, class Acc, class F, class Store>
+void sum_over_pairs(const std::vector<Vec<D>>& x, const std::vector<double>& h, const NeighbourList& nl,
+                    const Box<D>& box, F&& f, Store&& store) {
+  const Vec<D> L = box.length(), wrap = box.wrap_factor();
+  for_each_particle<D>(x.size(), nl, [&](std::size_t i) { pairs_of<D, Acc>(i, x, h, nl, L, wrap, f, store); });
+}
+
+// store(i, sum of g(j, |r_ij|, h_ij) over i's pairs) for every particle i (weight_sum_of: g must
+// vanish for |r_ij| >= h_ij).
+template <int D, class G, class Store>
+void sum_weights_over_pairs(const std::vector<Vec<D>>& x, const std::vector<double>& h, const NeighbourList& nl,
+                            const Box<D>& box, G&& g, Store&& store) {
+  const Vec<D> L = box.length(), wrap = box.wrap_factor();
+  const std::size_t n = x.size();
+  Coordinates<D> xs;
+  for (int d = 0; d < D; ++d) xs[d].resize(n);
+#pragma omp parallel for if (n >= parallel_threshold)
+  for (std::size_t i = 0; i < n; ++i)
+    for (int d = 0; d < D; ++d) xs[d][i] = x[i][d];
+  for_each_particle<D>(n, nl, [&](std::size_t i) { store(i, weight_sum_of<D>(i, xs, h, nl, L, wrap, g)); });
+}
+
+// Calls f(i, j, r_ij, |r_ij|, h_ij) for every interacting pair (|r_ij| < h_ij); f may only write to i's own
+// outputs (the pair loop above without an accumulator).
+template <int D, class F>
+void for_each_pair(const std::vector<Vec<D>>& x, const std::vector<double>& h, const NeighbourList& nl,
+                   const Box<D>& box, F&& f) {
+  struct None {};
+  sum_over_pairs<D, None>(
+      x, h, nl, box,
+      [&](None&, std::size_t i, int j, const Vec<D>& rij, double r, double hij) { f(i, j, rij, r, hij); },
+      [](std::size_t, const None&) {});
+}
+
+}  // namespace sph

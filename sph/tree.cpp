@@ -1,8 +1,0 @@
-// The 3D tree (sph/tree.hpp), compiled once.
-#include "sph/tree.hpp"
-
-namespace sph {
-
-template Tree<3> build_tree<3>(const std::vector<Vec<3>>&, const std::vector<double>&, int);
-
-}  // namespace sph
