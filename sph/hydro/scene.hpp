@@ -66,8 +66,8 @@ struct Scene {
     if constexpr ((has_pair<Terms> || ...)) {
       sum_over_pairs<D, PairSums<D>>(
           p.x, p.h, nb.list, nb.box,
-          [&](PairSums<D>& s, std::size_t i, int j, const Vec<D>& rij, double r, double h) {
-            const Pair<D> pr{i, j, rij, r, h, CubicSpline<D>::gradW(rij, r, h)};
+          [&](PairSums<D>& s, std::size_t i, int j, const Vec<D>& rij, double r, double h, double g) {
+            const Pair<D> pr{i, j, rij, r, h, Vec<D>(g * rij)};  // grad_i W_ij (9)
             std::apply([&](auto&... t) { (pair(t, p, s, pr), ...); }, terms);
           },
           [&](std::size_t i, const PairSums<D>& s) {
