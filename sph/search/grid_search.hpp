@@ -77,7 +77,10 @@ template <int D>
   // the one among h_max and quantiles of h that minimises the volume searched,
   // sum_i ((2 ceil(h_i / (h_c/2)) + 1) h_c/2)^D: the bulk's h when a few particles are far wider.
   double width = 0.5 * hmax;
-  {
+  double hmin = hmax;  // of the positive finite h
+  for (double hi : h)
+    if (hi > 0.0 && hi < hmin) hmin = hi;
+  if (hmax >= 1.5 * hmin) {  // else h_max < 1.5 h_median for sure: no quantiles needed
     std::vector<double> hq;  // the positive finite h (a NaN would break the ordering)
     hq.reserve(n);
     for (double hi : h)
@@ -130,6 +133,7 @@ template <int D>
   coord.resize(n);
   cell_of.resize(n);
   start.assign(ncell + 1, 0);
+#pragma omp parallel for if (n >= parallel_threshold)
   for (std::size_t i = 0; i < n; ++i) {
     for (int d = 0; d < D; ++d) {
       double xd = x[i][d] - lo[d];
@@ -137,22 +141,23 @@ template <int D>
       coord[i][d] = std::clamp(static_cast<int>(xd / ext[d] * nc[d]), 0, nc[d] - 1);
     }
     cell_of[i] = flat(coord[i]);
-    ++start[cell_of[i] + 1];
   }
+  for (std::size_t i = 0; i < n; ++i) ++start[cell_of[i] + 1];
   for (std::int64_t c = 0; c < ncell; ++c) start[c + 1] += start[c];
   sorted.resize(n);
   xs.resize(n);
   hs.resize(n);
   {
     std::vector<std::int64_t> fill(start.begin(), start.end() - 1);
-    for (std::size_t i = 0; i < n; ++i) {
-      const std::int64_t k = fill[cell_of[i]]++;
-      sorted[k] = static_cast<int>(i);
-      xs[k] = x[i];
-      for (int d = 0; d < D; ++d)
-        if (box.periodic[d]) xs[k][d] = lo[d] + (x[i][d] - lo[d]) - L[d] * std::floor((x[i][d] - lo[d]) / L[d]);
-      hs[k] = h[i];
-    }
+    for (std::size_t i = 0; i < n; ++i) sorted[fill[cell_of[i]]++] = static_cast<int>(i);
+  }
+#pragma omp parallel for if (n >= parallel_threshold)
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::size_t i = sorted[k];
+    xs[k] = x[i];
+    for (int d = 0; d < D; ++d)
+      if (box.periodic[d]) xs[k][d] = lo[d] + (x[i][d] - lo[d]) - L[d] * std::floor((x[i][d] - lo[d]) / L[d]);
+    hs[k] = h[i];
   }
 
   // The stencil of a cell as runs of consecutive cells along x (contiguous in the sorted
