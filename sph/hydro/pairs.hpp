@@ -11,6 +11,11 @@
 #include "sph/kernel/cubic_spline.hpp"
 #include "sph/search/neighbour_list.hpp"
 
+// The pair loops' second copy, for AVX2 and FMA (core/isa.hpp), where the compiler can build it.
+#if defined(__x86_64__) && defined(__GNUC__)
+#define SPH_AVX2_COPY 1
+#endif
+
 namespace sph {
 
 // Symmetric smoothing length of a pair (errata, 9.4.4): h_ij = (h_i + h_j) / 2.
@@ -32,43 +37,73 @@ Coordinates<D> coordinates(const std::vector<Vec<D>>& x) {
   return xs;
 }
 
-// The listed pairs of particle i in batches, shaped for SIMD. For each batch, first the geometry
-// of every listed j, without a branch, in a loop the compiler vectorises (gathers of x_j and h_j;
-// the kernel's pieces as masks): r_ij = r_i - r_j at the nearest image, |r_ij|, h_ij, and the
-// factor g_ij = K::dWdr(|r_ij|, h_ij) / |r_ij| of grad_i W_ij = g_ij r_ij (9) (0 at r = 0). Then,
-// in list order, the pairs that interact (|r_ij| < h_ij: W_ij and grad W_ij vanish beyond):
-// f(acc, i, j, r_ij, |r_ij|, h_ij, g_ij) adds pair j's share to acc (a local, so the sum stays in
-// registers and no store inside the loop can alias the particle data the next pair reads), and
-// store(i, acc) writes i's outputs once. The sums are in list order whatever the vector width.
-// The 3D force loop of the bench: 15.9 -> 9.7 ns a pair on the AVX2 path (measured, N = 125,000).
+// The geometry of a batch of listed pairs (i, j_t), t < nb: r_ij = r_i - r_j at the nearest image
+// (dx[d][t]), |r_ij|, h_ij and the factor g_ij = K::dWdr(|r_ij|, h_ij) / |r_ij| of
+// grad_i W_ij = g_ij r_ij (9) (0 at r = 0).
+template <int D>
+struct PairBatch {
+  static constexpr int size = 64;
+  double dx[D][size], r[size], h[size], g[size];
+};
+
+// Fills b for the pairs (i, js[t]), t < nb, without a branch, in a loop the compiler vectorises
+// (gathers of x_j and h_j, the kernel's pieces as masks). In two copies, portable and AVX2 + FMA
+// (core/isa.hpp), compiled once in hydro/pair_geometry.cpp rather than inlined into every scene's
+// pair loop: the scenes do not change it, and the build would compile it again in each.
+template <int D, class K>
+void pair_geometry(std::size_t i, const int* js, int nb, const Coordinates<D>& xs, const std::vector<double>& h,
+                   const Vec<D>& L, const Vec<D>& wrap, PairBatch<D>& b);
+#ifdef SPH_AVX2_COPY
+template <int D, class K>
+[[gnu::target("avx2,fma")]] void pair_geometry_avx2(std::size_t i, const int* js, int nb, const Coordinates<D>& xs,
+                                                    const std::vector<double>& h, const Vec<D>& L, const Vec<D>& wrap,
+                                                    PairBatch<D>& b);
+extern template void pair_geometry<1, CubicSpline<1>>(std::size_t, const int*, int, const Coordinates<1>&,
+                                                      const std::vector<double>&, const Vec<1>&, const Vec<1>&,
+                                                      PairBatch<1>&);
+extern template void pair_geometry<2, CubicSpline<2>>(std::size_t, const int*, int, const Coordinates<2>&,
+                                                      const std::vector<double>&, const Vec<2>&, const Vec<2>&,
+                                                      PairBatch<2>&);
+extern template void pair_geometry<3, CubicSpline<3>>(std::size_t, const int*, int, const Coordinates<3>&,
+                                                      const std::vector<double>&, const Vec<3>&, const Vec<3>&,
+                                                      PairBatch<3>&);
+extern template void pair_geometry_avx2<2, CubicSpline<2>>(std::size_t, const int*, int, const Coordinates<2>&,
+                                                           const std::vector<double>&, const Vec<2>&, const Vec<2>&,
+                                                           PairBatch<2>&);
+extern template void pair_geometry_avx2<3, CubicSpline<3>>(std::size_t, const int*, int, const Coordinates<3>&,
+                                                           const std::vector<double>&, const Vec<3>&, const Vec<3>&,
+                                                           PairBatch<3>&);
+#endif
+
+// The pairs of particle i, in batches: the batch's geometry (pair_geometry), then, in list order,
+// the pairs that interact (|r_ij| < h_ij: W_ij and grad W_ij vanish beyond): f(acc, i, j, r_ij,
+// |r_ij|, h_ij, g_ij) adds pair j's share to acc (a local, so the sum stays in registers and no
+// store inside the loop can alias the particle data the next pair reads), and store(i, acc) writes
+// i's outputs once. The sums are in list order whatever the vector width. The 3D force loop of
+// the bench: 15.9 -> 9.7 ns a pair on the AVX2 path (measured, N = 125,000).
 template <int D, class K, class Acc, class F, class Store>
-inline void pairs_of(std::size_t i, const Coordinates<D>& xs, const std::vector<double>& h, const NeighbourList& nl,
-                     const Vec<D>& L, const Vec<D>& wrap, F& f, Store& store) {
-  constexpr int batch = 64;
-  double dx[D][batch], r[batch], hij[batch], g[batch];
+inline void pairs_of(std::size_t i, bool avx2, const Coordinates<D>& xs, const std::vector<double>& h,
+                     const NeighbourList& nl, const Vec<D>& L, const Vec<D>& wrap, F& f, Store& store) {
+  PairBatch<D> b;
   const int* js = nl.j.data() + nl.offset[i];
   const int count = static_cast<int>(nl.offset[i + 1] - nl.offset[i]);
-  const double hi = h[i];
   Acc acc{};
-  for (int t0 = 0; t0 < count; t0 += batch) {
-    const int nb = std::min(count - t0, batch);
-#pragma omp simd
-    for (int t = 0; t < nb; ++t) {
-      const int j = js[t0 + t];
-      double r2 = 0.0;
-      for (int d = 0; d < D; ++d) {
-        dx[d][t] = min_image(xs[d][i] - xs[d][j], L[d], wrap[d]);
-        r2 += dx[d][t] * dx[d][t];
-      }
-      r[t] = std::sqrt(r2);
-      hij[t] = h_ij(hi, h[j]);
-      g[t] = r[t] > 0.0 ? K::dWdr(r[t], hij[t]) / r[t] : 0.0;
+  for (int t0 = 0; t0 < count; t0 += b.size) {
+    const int nb = std::min(count - t0, b.size);
+#ifdef SPH_AVX2_COPY
+    if (D >= 2 && avx2) {
+      if constexpr (D >= 2) pair_geometry_avx2<D, K>(i, js + t0, nb, xs, h, L, wrap, b);
+    } else {
+      pair_geometry<D, K>(i, js + t0, nb, xs, h, L, wrap, b);
     }
+#else
+    pair_geometry<D, K>(i, js + t0, nb, xs, h, L, wrap, b);
+#endif
     for (int t = 0; t < nb; ++t)
-      if (r[t] < hij[t]) {
+      if (b.r[t] < b.h[t]) {
         Vec<D> rij;
-        for (int d = 0; d < D; ++d) rij[d] = dx[d][t];
-        f(acc, i, js[t0 + t], rij, r[t], hij[t], g[t]);
+        for (int d = 0; d < D; ++d) rij[d] = b.dx[d][t];
+        f(acc, i, js[t0 + t], rij, b.r[t], b.h[t], b.g[t]);
       }
   }
   store(i, acc);
@@ -114,8 +149,7 @@ template <class Visit>
 [[gnu::flatten]] void particles_in_portable(std::size_t k0, std::size_t k1, const NeighbourList& nl, Visit& visit) {
   for (std::size_t k = k0; k < k1; ++k) visit(nl.visit(k));
 }
-#if defined(__x86_64__) && defined(__GNUC__)
-#define SPH_AVX2_COPY 1
+#ifdef SPH_AVX2_COPY
 template <class Visit>
 [[gnu::flatten, gnu::target("avx2,fma")]] void particles_in_avx2(std::size_t k0, std::size_t k1,
                                                                  const NeighbourList& nl, Visit& visit) {
@@ -151,7 +185,9 @@ void sum_over_pairs(const std::vector<Vec<D>>& x, const std::vector<double>& h, 
                     const Box<D>& box, F&& f, Store&& store) {
   const Vec<D> L = box.length(), wrap = box.wrap_factor();
   const Coordinates<D> xs = coordinates<D>(x);
-  for_each_particle<D>(x.size(), nl, [&](std::size_t i) { pairs_of<D, K, Acc>(i, xs, h, nl, L, wrap, f, store); });
+  const bool avx2 = isa_path() == IsaPath::avx2;
+  for_each_particle<D>(x.size(), nl,
+                       [&](std::size_t i) { pairs_of<D, K, Acc>(i, avx2, xs, h, nl, L, wrap, f, store); });
 }
 
 // store(i, sum of g(j, |r_ij|, h_ij) over i's pairs) for every particle i (weight_sum_of: g must

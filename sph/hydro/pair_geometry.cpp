@@ -1,0 +1,59 @@
+// The geometry of a batch of pairs (hydro/pairs.hpp), compiled once per dimension and
+// instruction-set path.
+#include <cmath>
+
+#include "sph/hydro/pairs.hpp"
+
+namespace sph {
+
+namespace {
+template <int D, class K>
+inline void batch_geometry(std::size_t i, const int* js, int nb, const Coordinates<D>& xs,
+                           const std::vector<double>& h, const Vec<D>& L, const Vec<D>& wrap, PairBatch<D>& b) {
+  const double hi = h[i];
+#pragma omp simd
+  for (int t = 0; t < nb; ++t) {
+    const int j = js[t];
+    double r2 = 0.0;
+    for (int d = 0; d < D; ++d) {
+      b.dx[d][t] = min_image(xs[d][i] - xs[d][j], L[d], wrap[d]);
+      r2 += b.dx[d][t] * b.dx[d][t];
+    }
+    b.r[t] = std::sqrt(r2);
+    b.h[t] = h_ij(hi, h[j]);
+    b.g[t] = b.r[t] > 0.0 ? K::dWdr(b.r[t], b.h[t]) / b.r[t] : 0.0;
+  }
+}
+}  // namespace
+
+template <int D, class K>
+void pair_geometry(std::size_t i, const int* js, int nb, const Coordinates<D>& xs, const std::vector<double>& h,
+                   const Vec<D>& L, const Vec<D>& wrap, PairBatch<D>& b) {
+  batch_geometry<D, K>(i, js, nb, xs, h, L, wrap, b);
+}
+#ifdef SPH_AVX2_COPY
+template <int D, class K>
+[[gnu::target("avx2,fma"), gnu::flatten]] void pair_geometry_avx2(std::size_t i, const int* js, int nb,
+                                                                  const Coordinates<D>& xs,
+                                                                  const std::vector<double>& h, const Vec<D>& L,
+                                                                  const Vec<D>& wrap, PairBatch<D>& b) {
+  batch_geometry<D, K>(i, js, nb, xs, h, L, wrap, b);
+}
+#endif
+
+template void pair_geometry<1, CubicSpline<1>>(std::size_t, const int*, int, const Coordinates<1>&,
+                                               const std::vector<double>&, const Vec<1>&, const Vec<1>&, PairBatch<1>&);
+template void pair_geometry<2, CubicSpline<2>>(std::size_t, const int*, int, const Coordinates<2>&,
+                                               const std::vector<double>&, const Vec<2>&, const Vec<2>&, PairBatch<2>&);
+template void pair_geometry<3, CubicSpline<3>>(std::size_t, const int*, int, const Coordinates<3>&,
+                                               const std::vector<double>&, const Vec<3>&, const Vec<3>&, PairBatch<3>&);
+#ifdef SPH_AVX2_COPY
+template void pair_geometry_avx2<2, CubicSpline<2>>(std::size_t, const int*, int, const Coordinates<2>&,
+                                                    const std::vector<double>&, const Vec<2>&, const Vec<2>&,
+                                                    PairBatch<2>&);
+template void pair_geometry_avx2<3, CubicSpline<3>>(std::size_t, const int*, int, const Coordinates<3>&,
+                                                    const std::vector<double>&, const Vec<3>&, const Vec<3>&,
+                                                    PairBatch<3>&);
+#endif
+
+}  // namespace sph
