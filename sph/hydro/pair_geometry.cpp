@@ -24,36 +24,33 @@ inline void batch_geometry(std::size_t i, const int* js, int nb, const Coordinat
     b.g[t] = b.r[t] > 0.0 ? K::dWdr(b.r[t], b.h[t]) / b.r[t] : 0.0;
   }
 }
+
+#ifdef SPH_AVX2_COPY
+template <int D, class K>
+[[gnu::target("avx2,fma"), gnu::flatten]] void batch_geometry_avx2(std::size_t i, const int* js, int nb,
+                                                                   const Coordinates<D>& xs,
+                                                                   const std::vector<double>& h, const Vec<D>& L,
+                                                                   const Vec<D>& wrap, PairBatch<D>& b) {
+  batch_geometry<D, K>(i, js, nb, xs, h, L, wrap, b);
+}
+#endif
 }  // namespace
 
 template <int D, class K>
-void pair_geometry(std::size_t i, const int* js, int nb, const Coordinates<D>& xs, const std::vector<double>& h,
-                   const Vec<D>& L, const Vec<D>& wrap, PairBatch<D>& b) {
-  batch_geometry<D, K>(i, js, nb, xs, h, L, wrap, b);
-}
+void pair_geometry([[maybe_unused]] bool avx2, std::size_t i, const int* js, int nb, const Coordinates<D>& xs,
+                   const std::vector<double>& h, const Vec<D>& L, const Vec<D>& wrap, PairBatch<D>& b) {
 #ifdef SPH_AVX2_COPY
-template <int D, class K>
-[[gnu::target("avx2,fma"), gnu::flatten]] void pair_geometry_avx2(std::size_t i, const int* js, int nb,
-                                                                  const Coordinates<D>& xs,
-                                                                  const std::vector<double>& h, const Vec<D>& L,
-                                                                  const Vec<D>& wrap, PairBatch<D>& b) {
+  if constexpr (D >= 2)  // 1D keeps the portable copy (pairs.hpp)
+    if (avx2) return batch_geometry_avx2<D, K>(i, js, nb, xs, h, L, wrap, b);
+#endif
   batch_geometry<D, K>(i, js, nb, xs, h, L, wrap, b);
 }
-#endif
 
-template void pair_geometry<1, CubicSpline<1>>(std::size_t, const int*, int, const Coordinates<1>&,
+template void pair_geometry<1, CubicSpline<1>>(bool, std::size_t, const int*, int, const Coordinates<1>&,
                                                const std::vector<double>&, const Vec<1>&, const Vec<1>&, PairBatch<1>&);
-template void pair_geometry<2, CubicSpline<2>>(std::size_t, const int*, int, const Coordinates<2>&,
+template void pair_geometry<2, CubicSpline<2>>(bool, std::size_t, const int*, int, const Coordinates<2>&,
                                                const std::vector<double>&, const Vec<2>&, const Vec<2>&, PairBatch<2>&);
-template void pair_geometry<3, CubicSpline<3>>(std::size_t, const int*, int, const Coordinates<3>&,
+template void pair_geometry<3, CubicSpline<3>>(bool, std::size_t, const int*, int, const Coordinates<3>&,
                                                const std::vector<double>&, const Vec<3>&, const Vec<3>&, PairBatch<3>&);
-#ifdef SPH_AVX2_COPY
-template void pair_geometry_avx2<2, CubicSpline<2>>(std::size_t, const int*, int, const Coordinates<2>&,
-                                                    const std::vector<double>&, const Vec<2>&, const Vec<2>&,
-                                                    PairBatch<2>&);
-template void pair_geometry_avx2<3, CubicSpline<3>>(std::size_t, const int*, int, const Coordinates<3>&,
-                                                    const std::vector<double>&, const Vec<3>&, const Vec<3>&,
-                                                    PairBatch<3>&);
-#endif
 
 }  // namespace sph

@@ -47,33 +47,21 @@ struct PairBatch {
 };
 
 // Fills b for the pairs (i, js[t]), t < nb, without a branch, in a loop the compiler vectorises
-// (gathers of x_j and h_j, the kernel's pieces as masks). In two copies, portable and AVX2 + FMA
-// (core/isa.hpp), compiled once in hydro/pair_geometry.cpp rather than inlined into every scene's
-// pair loop: the scenes do not change it, and the build would compile it again in each.
+// (gathers of x_j and h_j, the kernel's pieces as masks); on the AVX2 + FMA copy if avx2 (2D and
+// 3D, core/isa.hpp). Compiled once in hydro/pair_geometry.cpp rather than inlined into every
+// scene's pair loop: the scenes do not change it, and the build would compile it again in each.
 template <int D, class K>
-void pair_geometry(std::size_t i, const int* js, int nb, const Coordinates<D>& xs, const std::vector<double>& h,
-                   const Vec<D>& L, const Vec<D>& wrap, PairBatch<D>& b);
-#ifdef SPH_AVX2_COPY
-template <int D, class K>
-[[gnu::target("avx2,fma")]] void pair_geometry_avx2(std::size_t i, const int* js, int nb, const Coordinates<D>& xs,
-                                                    const std::vector<double>& h, const Vec<D>& L, const Vec<D>& wrap,
-                                                    PairBatch<D>& b);
-extern template void pair_geometry<1, CubicSpline<1>>(std::size_t, const int*, int, const Coordinates<1>&,
+void pair_geometry(bool avx2, std::size_t i, const int* js, int nb, const Coordinates<D>& xs,
+                   const std::vector<double>& h, const Vec<D>& L, const Vec<D>& wrap, PairBatch<D>& b);
+extern template void pair_geometry<1, CubicSpline<1>>(bool, std::size_t, const int*, int, const Coordinates<1>&,
                                                       const std::vector<double>&, const Vec<1>&, const Vec<1>&,
                                                       PairBatch<1>&);
-extern template void pair_geometry<2, CubicSpline<2>>(std::size_t, const int*, int, const Coordinates<2>&,
+extern template void pair_geometry<2, CubicSpline<2>>(bool, std::size_t, const int*, int, const Coordinates<2>&,
                                                       const std::vector<double>&, const Vec<2>&, const Vec<2>&,
                                                       PairBatch<2>&);
-extern template void pair_geometry<3, CubicSpline<3>>(std::size_t, const int*, int, const Coordinates<3>&,
+extern template void pair_geometry<3, CubicSpline<3>>(bool, std::size_t, const int*, int, const Coordinates<3>&,
                                                       const std::vector<double>&, const Vec<3>&, const Vec<3>&,
                                                       PairBatch<3>&);
-extern template void pair_geometry_avx2<2, CubicSpline<2>>(std::size_t, const int*, int, const Coordinates<2>&,
-                                                           const std::vector<double>&, const Vec<2>&, const Vec<2>&,
-                                                           PairBatch<2>&);
-extern template void pair_geometry_avx2<3, CubicSpline<3>>(std::size_t, const int*, int, const Coordinates<3>&,
-                                                           const std::vector<double>&, const Vec<3>&, const Vec<3>&,
-                                                           PairBatch<3>&);
-#endif
 
 // The pairs of particle i, in batches: the batch's geometry (pair_geometry), then, in list order,
 // the pairs that interact (|r_ij| < h_ij: W_ij and grad W_ij vanish beyond): f(acc, i, j, r_ij,
@@ -90,15 +78,7 @@ inline void pairs_of(std::size_t i, bool avx2, const Coordinates<D>& xs, const s
   Acc acc{};
   for (int t0 = 0; t0 < count; t0 += b.size) {
     const int nb = std::min(count - t0, b.size);
-#ifdef SPH_AVX2_COPY
-    if (D >= 2 && avx2) {
-      if constexpr (D >= 2) pair_geometry_avx2<D, K>(i, js + t0, nb, xs, h, L, wrap, b);
-    } else {
-      pair_geometry<D, K>(i, js + t0, nb, xs, h, L, wrap, b);
-    }
-#else
-    pair_geometry<D, K>(i, js + t0, nb, xs, h, L, wrap, b);
-#endif
+    pair_geometry<D, K>(avx2, i, js + t0, nb, xs, h, L, wrap, b);
     for (int t = 0; t < nb; ++t)
       if (b.r[t] < b.h[t]) {
         Vec<D> rij;
