@@ -20,9 +20,9 @@ template <int D, ContinuityForm F>
 struct ContinuityDensity {
   void pair(const Particles<D>& p, PairSums<D>& s, const Pair<D>& q) const {
     if constexpr (F == ContinuityForm::direct29)
-      s.drhodt -= p.m[q.j] * p.v[q.j].dot(q.gradW);  // (29)
+      s.drhodt -= p.m[q.j] * q.vj.dot(q.gradW);  // (29)
     else
-      s.drhodt -= p.m[q.j] * (p.v[q.j] - p.v[q.i]).dot(q.gradW);  // (33)
+      s.drhodt -= p.m[q.j] * (q.vj - q.vi).dot(q.gradW);  // (33)
   }
 };
 

@@ -20,7 +20,7 @@ void smoothing_length_from_density(Particles<D>& p, double hfact) {
 template <int D>
 struct SmoothingLengthRate {
   void pair(const Particles<D>& p, PairSums<D>& s, const Pair<D>& q) const {
-    s.dhdt += p.h[q.i] / (D * p.rho[q.i]) * p.m[q.j] * (p.v[q.j] - p.v[q.i]).dot(q.gradW);  // (53)
+    s.dhdt += p.h[q.i] / (D * p.rho[q.i]) * p.m[q.j] * (q.vj - q.vi).dot(q.gradW);  // (53)
   }
 };
 

@@ -12,11 +12,11 @@ struct EnergyAsymmetric {
   void pair(const Particles<D>& p, PairSums<D>& s, const Pair<D>& q) const {
     const double w = p.m[q.j] / (p.rho[q.i] * p.rho[q.j]);
     if constexpr (F == EnergyForm::direct37)
-      s.dudt -= w * p.p[q.i] * p.v[q.j].dot(q.gradW);  // (37)
+      s.dudt -= w * p.p[q.i] * q.vj.dot(q.gradW);  // (37)
     else if constexpr (F == EnergyForm::difference38)
-      s.dudt += w * p.p[q.i] * (p.v[q.i] - p.v[q.j]).dot(q.gradW);  // (38)
+      s.dudt += w * p.p[q.i] * (q.vi - q.vj).dot(q.gradW);  // (38)
     else
-      s.dudt += w * p.p[q.j] * (p.v[q.i] - p.v[q.j]).dot(q.gradW);  // (40)
+      s.dudt += w * p.p[q.j] * (q.vi - q.vj).dot(q.gradW);  // (40)
   }
 };
 
@@ -28,7 +28,7 @@ struct EnergySymmetric {
   Lambda lambda{};
   void pair(const Particles<D>& p, PairSums<D>& s, const Pair<D>& q) const {
     s.dudt += 0.5 * p.m[q.j] * lambda.factor(p.p[q.i], p.p[q.j], p.rho[q.i], p.rho[q.j]) *
-                   (p.v[q.i] - p.v[q.j]).dot(q.gradW);
+                   (q.vi - q.vj).dot(q.gradW);
   }
 };
 

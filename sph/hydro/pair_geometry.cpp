@@ -8,7 +8,7 @@ namespace sph {
 
 namespace {
 template <int D, class K>
-inline void batch_geometry(std::size_t i, const int* js, int nb, const Coordinates<D>& xs,
+inline void batch_geometry(std::size_t i, const int* js, int nb, const Components<D>& xs,
                            const std::vector<double>& h, const Vec<D>& L, const Vec<D>& wrap, PairBatch<D>& b) {
   const double hi = h[i];
 #pragma omp simd
@@ -28,7 +28,7 @@ inline void batch_geometry(std::size_t i, const int* js, int nb, const Coordinat
 #ifdef SPH_AVX2_COPY
 template <int D, class K>
 [[gnu::target("avx2,fma"), gnu::flatten]] void batch_geometry_avx2(std::size_t i, const int* js, int nb,
-                                                                   const Coordinates<D>& xs,
+                                                                   const Components<D>& xs,
                                                                    const std::vector<double>& h, const Vec<D>& L,
                                                                    const Vec<D>& wrap, PairBatch<D>& b) {
   batch_geometry<D, K>(i, js, nb, xs, h, L, wrap, b);
@@ -37,7 +37,7 @@ template <int D, class K>
 }  // namespace
 
 template <int D, class K>
-void pair_geometry([[maybe_unused]] bool avx2, std::size_t i, const int* js, int nb, const Coordinates<D>& xs,
+void pair_geometry([[maybe_unused]] bool avx2, std::size_t i, const int* js, int nb, const Components<D>& xs,
                    const std::vector<double>& h, const Vec<D>& L, const Vec<D>& wrap, PairBatch<D>& b) {
 #ifdef SPH_AVX2_COPY
   if constexpr (D >= 2)  // 1D keeps the portable copy (pairs.hpp)
@@ -46,11 +46,11 @@ void pair_geometry([[maybe_unused]] bool avx2, std::size_t i, const int* js, int
   batch_geometry<D, K>(i, js, nb, xs, h, L, wrap, b);
 }
 
-template void pair_geometry<1, CubicSpline<1>>(bool, std::size_t, const int*, int, const Coordinates<1>&,
+template void pair_geometry<1, CubicSpline<1>>(bool, std::size_t, const int*, int, const Components<1>&,
                                                const std::vector<double>&, const Vec<1>&, const Vec<1>&, PairBatch<1>&);
-template void pair_geometry<2, CubicSpline<2>>(bool, std::size_t, const int*, int, const Coordinates<2>&,
+template void pair_geometry<2, CubicSpline<2>>(bool, std::size_t, const int*, int, const Components<2>&,
                                                const std::vector<double>&, const Vec<2>&, const Vec<2>&, PairBatch<2>&);
-template void pair_geometry<3, CubicSpline<3>>(bool, std::size_t, const int*, int, const Coordinates<3>&,
+template void pair_geometry<3, CubicSpline<3>>(bool, std::size_t, const int*, int, const Components<3>&,
                                                const std::vector<double>&, const Vec<3>&, const Vec<3>&, PairBatch<3>&);
 
 }  // namespace sph

@@ -21,19 +21,24 @@ namespace sph {
 // Symmetric smoothing length of a pair (errata, 9.4.4): h_ij = (h_i + h_j) / 2.
 inline double h_ij(double hi, double hj) { return 0.5 * (hi + hj); }
 
-// Positions as one array per dimension, x_i[d] = xs[d][i]: the pair loops gather them, and a
-// vector gather takes an index times 8 bytes, not times 24 (Vec<3>).
+// A vector field (positions, velocities) as one array per dimension, x_i[d] = xs[d][i]: the pair
+// loops gather them, and a vector gather takes an index times 8 bytes, not times 24 (Vec<3>).
 template <int D>
-using Coordinates = std::array<std::vector<double>, D>;
+using Components = std::array<std::vector<double>, D>;
 
 template <int D>
-Coordinates<D> coordinates(const std::vector<Vec<D>>& x) {
+void copy_components(const std::vector<Vec<D>>& x, Components<D>& xs) {
   const std::size_t n = x.size();
-  Coordinates<D> xs;
-  for (int d = 0; d < D; ++d) xs[d].resize(n);
+  for (int d = 0; d < D; ++d)
+    if (xs[d].size() != n) xs[d] = std::vector<double>(n);  // (resize: a GCC 12 false -Wstringop-overflow)
 #pragma omp parallel for if (n >= parallel_threshold)
   for (std::size_t i = 0; i < n; ++i)
     for (int d = 0; d < D; ++d) xs[d][i] = x[i][d];
+}
+template <int D>
+Components<D> components(const std::vector<Vec<D>>& x) {
+  Components<D> xs;
+  copy_components<D>(x, xs);
   return xs;
 }
 
@@ -51,15 +56,15 @@ struct PairBatch {
 // 3D, core/isa.hpp). Compiled once in hydro/pair_geometry.cpp rather than inlined into every
 // scene's pair loop: the scenes do not change it, and the build would compile it again in each.
 template <int D, class K>
-void pair_geometry(bool avx2, std::size_t i, const int* js, int nb, const Coordinates<D>& xs,
+void pair_geometry(bool avx2, std::size_t i, const int* js, int nb, const Components<D>& xs,
                    const std::vector<double>& h, const Vec<D>& L, const Vec<D>& wrap, PairBatch<D>& b);
-extern template void pair_geometry<1, CubicSpline<1>>(bool, std::size_t, const int*, int, const Coordinates<1>&,
+extern template void pair_geometry<1, CubicSpline<1>>(bool, std::size_t, const int*, int, const Components<1>&,
                                                       const std::vector<double>&, const Vec<1>&, const Vec<1>&,
                                                       PairBatch<1>&);
-extern template void pair_geometry<2, CubicSpline<2>>(bool, std::size_t, const int*, int, const Coordinates<2>&,
+extern template void pair_geometry<2, CubicSpline<2>>(bool, std::size_t, const int*, int, const Components<2>&,
                                                       const std::vector<double>&, const Vec<2>&, const Vec<2>&,
                                                       PairBatch<2>&);
-extern template void pair_geometry<3, CubicSpline<3>>(bool, std::size_t, const int*, int, const Coordinates<3>&,
+extern template void pair_geometry<3, CubicSpline<3>>(bool, std::size_t, const int*, int, const Components<3>&,
                                                       const std::vector<double>&, const Vec<3>&, const Vec<3>&,
                                                       PairBatch<3>&);
 
@@ -70,7 +75,7 @@ extern template void pair_geometry<3, CubicSpline<3>>(bool, std::size_t, const i
 // i's outputs once. The sums are in list order whatever the vector width. The 3D force loop of
 // the bench: 15.9 -> 9.7 ns a pair on the AVX2 path (measured, N = 125,000).
 template <int D, class K, class Acc, class F, class Store>
-inline void pairs_of(std::size_t i, bool avx2, const Coordinates<D>& xs, const std::vector<double>& h,
+inline void pairs_of(std::size_t i, bool avx2, const Components<D>& xs, const std::vector<double>& h,
                      const NeighbourList& nl, const Vec<D>& L, const Vec<D>& wrap, F& f, Store& store) {
   PairBatch<D> b;
   const int* js = nl.j.data() + nl.offset[i];
@@ -95,7 +100,7 @@ inline void pairs_of(std::size_t i, bool avx2, const Coordinates<D>& xs, const s
 // a pair on the AVX2 path (measured, N = 125,000). The portable path has no vector gathers and
 // stays scalar.
 template <int D, class G>
-inline double weight_sum_of(std::size_t i, const Coordinates<D>& xs, const std::vector<double>& h,
+inline double weight_sum_of(std::size_t i, const Components<D>& xs, const std::vector<double>& h,
                             const NeighbourList& nl, const Vec<D>& L, const Vec<D>& wrap, G& g) {
   constexpr int batch = 128;
   double value[batch];
@@ -164,7 +169,7 @@ template <int D, class Acc, class F, class Store, class K = CubicSpline<D>>
 void sum_over_pairs(const std::vector<Vec<D>>& x, const std::vector<double>& h, const NeighbourList& nl,
                     const Box<D>& box, F&& f, Store&& store) {
   const Vec<D> L = box.length(), wrap = box.wrap_factor();
-  const Coordinates<D> xs = coordinates<D>(x);
+  const Components<D> xs = components<D>(x);
   const bool avx2 = isa_path() == IsaPath::avx2;
   for_each_particle<D>(x.size(), nl,
                        [&](std::size_t i) { pairs_of<D, K, Acc>(i, avx2, xs, h, nl, L, wrap, f, store); });
@@ -176,7 +181,7 @@ template <int D, class G, class Store>
 void sum_weights_over_pairs(const std::vector<Vec<D>>& x, const std::vector<double>& h, const NeighbourList& nl,
                             const Box<D>& box, G&& g, Store&& store) {
   const Vec<D> L = box.length(), wrap = box.wrap_factor();
-  const Coordinates<D> xs = coordinates<D>(x);
+  const Components<D> xs = components<D>(x);
   for_each_particle<D>(x.size(), nl, [&](std::size_t i) { store(i, weight_sum_of<D>(i, xs, h, nl, L, wrap, g)); });
 }
 

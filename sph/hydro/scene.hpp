@@ -1,4 +1,5 @@
 #pragma once
+#include <algorithm>
 #include <cstddef>
 #include <tuple>
 #include <vector>
@@ -32,14 +33,16 @@ struct PairSums {
 };
 
 // One interacting pair as the pair loop hands it to the terms: r_ij = r_i - r_j (nearest
-// image), |r_ij|, the symmetric h_ij and grad_i W_ij(h_ij).
+// image), |r_ij|, the symmetric h_ij, grad_i W_ij(h_ij) and the velocities v_i, v_j (the terms
+// read them here, not from the particles: the pair loop gathers them from one array per
+// dimension, which it can vectorise).
 template <int D>
 struct Pair {
   std::size_t i;
   int j;
   Vec<D> rij;
   double r, h;
-  Vec<D> gradW;
+  Vec<D> gradW, vi, vj;
 };
 
 // The particles with the geometry their pair loops need.
@@ -51,10 +54,11 @@ struct Neighbourhood {
 
 // A scene lists its physical terms as types. A term may provide any of
 //   void prepare(Particles<D>&, const Neighbourhood<D>&)                   before the pair loop
-//   void pair(const Particles<D>&, PairSums<D>&, const Pair<D>&)           inside it (adds i's share)
+//   void pair(const Particles<D>&, PairSums<D>&, const Pair<D>&)           inside it (adds the pair's share)
 //   void finish(const Particles<D>&, const Neighbourhood<D>&, Derivatives<D>&)  after it
 // The pair loop is a fold over the terms that have pair(): a term the scene does not list is not
-// compiled into it, and no flag is tested per pair.
+// compiled into it, and no flag is tested per pair. pair() must not branch on the pair, and reads
+// velocities from the Pair: then the loop vectorises across pairs (sums_of below).
 template <int D, class... Terms>
 struct Scene {
   static constexpr int dim = D;
@@ -64,19 +68,11 @@ struct Scene {
     d.reset(p.size());
     std::apply([&](auto&... t) { (prepare(t, p, nb), ...); }, terms);
     if constexpr ((has_pair<Terms> || ...)) {
-      sum_over_pairs<D, PairSums<D>>(
-          p.x, p.h, nb.list, nb.box,
-          [&](PairSums<D>& s, std::size_t i, int j, const Vec<D>& rij, double r, double h, double g) {
-            const Pair<D> pr{i, j, rij, r, h, Vec<D>(g * rij)};  // grad_i W_ij (9)
-            std::apply([&](auto&... t) { (pair(t, p, s, pr), ...); }, terms);
-          },
-          [&](std::size_t i, const PairSums<D>& s) {
-            d.dvdt[i] = s.dvdt;
-            d.dudt[i] = s.dudt;
-            d.drhodt[i] = s.drhodt;
-            d.dhdt[i] = s.dhdt;
-            d.mu_max[i] = s.mu_max;
-          });
+      const Components<D> xs = components<D>(p.x), vs = components<D>(p.v);
+      const Vec<D> L = nb.box.length(), wrap = nb.box.wrap_factor();
+      const bool avx2 = isa_path() == IsaPath::avx2;
+      for_each_particle<D>(p.size(), nb.list,
+                           [&](std::size_t i) { sums_of(i, avx2, p, xs, vs, nb.list, L, wrap, d); });
     }
     std::apply([&](auto&... t) { (finish(t, p, nb, d), ...); }, terms);
   }
@@ -85,6 +81,73 @@ struct Scene {
   T& term() { return std::get<T>(terms); }
 
  private:
+  // The shares of a batch of pairs, one lane per pair.
+  struct Shares {
+    static constexpr int size = PairBatch<D>::size;
+    double dvdt[D][size], dudt[size], drhodt[size], dhdt[size], mu_max[size];
+  };
+
+  // The share of pair t of batch b, (i, j), in sh's lane t: 0 beyond h_ij, where W and grad W
+  // vanish. A function of its own: GCC 12 fails (internal error) on a PairSums declared inside
+  // the simd loop.
+  void share(int t, std::size_t i, int j, const Particles<D>& p, const Vec<D>& vi, const Components<D>& vs,
+             const PairBatch<D>& b, Shares& sh) const {
+    Vec<D> rij, vj;
+    for (int k = 0; k < D; ++k) {
+      rij[k] = b.dx[k][t];
+      vj[k] = vs[k][j];
+    }
+    const Pair<D> q{i, j, rij, b.r[t], b.h[t], Vec<D>(b.g[t] * rij), vi, vj};  // grad_i W_ij (9)
+    PairSums<D> s{};
+    std::apply([&](const auto&... term) { (pair(term, p, s, q), ...); }, terms);
+    // 1 inside, 0 beyond h_ij, multiplied rather than selected: GCC 12 would otherwise load the
+    // fields under the mask, as masked gathers it does not emulate (and does not vectorise).
+    const double in = b.r[t] < b.h[t] ? 1.0 : 0.0;
+    for (int k = 0; k < D; ++k) sh.dvdt[k][t] = in * s.dvdt[k];
+    sh.dudt[t] = in * s.dudt;
+    sh.drhodt[t] = in * s.drhodt;
+    sh.dhdt[t] = in * s.dhdt;
+    sh.mu_max[t] = in * s.mu_max;
+  }
+
+  // Particle i's sums over its listed pairs, in batches (hydro/pairs.hpp): the batch's geometry
+  // (pair_geometry), then every pair's share through the terms, all pairs of the batch in one
+  // branch-free loop the compiler vectorises (a pair beyond h_ij, where W and grad W vanish, has
+  // its share set to 0), then the shares summed in list order, so the sums do not depend on the
+  // vector width. A term adds to a PairSums that starts at 0 for each pair. The bench's force
+  // loop: 9.6-9.9 -> 7.3-7.4 ns a pair on the AVX2 path (measured, N = 125,000, one thread).
+  void sums_of(std::size_t i, bool avx2, const Particles<D>& p, const Components<D>& xs, const Components<D>& vs,
+               const NeighbourList& nl,
+               const Vec<D>& L, const Vec<D>& wrap, Derivatives<D>& d) const {
+    PairBatch<D> b;
+    Shares sh;
+    const int* js = nl.j.data() + nl.offset[i];
+    const int count = static_cast<int>(nl.offset[i + 1] - nl.offset[i]);
+    PairSums<D> acc{};
+    Vec<D> vi;
+    for (int k = 0; k < D; ++k) vi[k] = vs[k][i];
+    for (int t0 = 0; t0 < count; t0 += b.size) {
+      const int nb = std::min(count - t0, b.size);
+      pair_geometry<D, CubicSpline<D>>(avx2, i, js + t0, nb, xs, p.h, L, wrap, b);
+#pragma omp simd
+      for (int t = 0; t < nb; ++t) share(t, i, js[t0 + t], p, vi, vs, b, sh);
+      // Adding a share of +0 leaves a sum that starts at +0 unchanged, so the pairs beyond h_ij
+      // need no branch here either.
+      for (int t = 0; t < nb; ++t) {
+        for (int k = 0; k < D; ++k) acc.dvdt[k] += sh.dvdt[k][t];
+        acc.dudt += sh.dudt[t];
+        acc.drhodt += sh.drhodt[t];
+        acc.dhdt += sh.dhdt[t];
+        acc.mu_max = std::max(acc.mu_max, sh.mu_max[t]);
+      }
+    }
+    d.dvdt[i] = acc.dvdt;
+    d.dudt[i] = acc.dudt;
+    d.drhodt[i] = acc.drhodt;
+    d.dhdt[i] = acc.dhdt;
+    d.mu_max[i] = acc.mu_max;
+  }
+
   template <class T>
   static constexpr bool has_pair = requires(T& t, const Particles<D>& p, PairSums<D>& s, const Pair<D>& pr) {
     t.pair(p, s, pr);
@@ -94,7 +157,7 @@ struct Scene {
     if constexpr (requires { t.prepare(p, nb); }) t.prepare(p, nb);
   }
   template <class T>
-  static void pair(T& t, const Particles<D>& p, PairSums<D>& s, const Pair<D>& pr) {
+  static void pair(const T& t, const Particles<D>& p, PairSums<D>& s, const Pair<D>& pr) {
     if constexpr (has_pair<T>) t.pair(p, s, pr);
   }
   template <class T>

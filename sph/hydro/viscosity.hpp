@@ -17,7 +17,7 @@ struct ArtificialViscosity {
   // Branch-free: a receding pair has v_ij . r_ij clipped to 0, so mu_ij = Pi_ij = 0 (45) without
   // a jump that half the pairs would mispredict.
   void pair(const Particles<D>& p, PairSums<D>& s, const Pair<D>& q) const {
-    const Vec<D> vij = p.v[q.i] - p.v[q.j];
+    const Vec<D> vij = q.vi - q.vj;
     const double vr = std::min(vij.dot(q.rij), 0.0);  // (45): only approaching pairs
     const double h = h_scale * q.h;
     const double mu = h * vr / (q.r * q.r + eps * h * h);  // (46), errata: |r_i - r_j|^2

@@ -6,9 +6,69 @@
 
 #include <omp.h>
 
+#include "sph/core/isa.hpp"
+#include "sph/hydro/pairs.hpp"
 #include "sph/search/grid_search.hpp"
 
 namespace sph {
+
+// The pairs (i, cj[t]), t < count, with |r_ij| < max(h_i, h_j), appended to js in their order;
+// returns how many. In batches: a branch-free loop the compiler vectorises (positions gathered
+// from one array per dimension, hydro/pairs.hpp) marks the pairs to keep, then a loop writes every
+// candidate and advances past the kept ones, with no branch to mispredict.
+template <int D>
+inline std::size_t pairs_within(std::size_t i, const int* cj, std::size_t count, const Components<D>& xs,
+                                const std::vector<double>& h, const Vec<D>& L, const Vec<D>& wrap, int* js) {
+  constexpr std::size_t batch = 128;
+  int keep[batch];
+  std::size_t used = 0;
+  const double hi = h[i];
+  for (std::size_t t0 = 0; t0 < count; t0 += batch) {
+    const int nb = static_cast<int>(std::min(count - t0, batch));
+#pragma omp simd
+    for (int t = 0; t < nb; ++t) {
+      const int j = cj[t0 + t];
+      double r2 = 0.0;
+      for (int d = 0; d < D; ++d) {
+        const double dx = min_image(xs[d][i] - xs[d][j], L[d], wrap[d]);
+        r2 += dx * dx;
+      }
+      const double hm = std::max(hi, h[j]);
+      keep[t] = r2 < hm * hm;
+    }
+    for (int t = 0; t < nb; ++t) {
+      js[used] = cj[t0 + t];
+      used += keep[t];
+    }
+  }
+  return used;
+}
+
+// pairs_within for the particles i = first .. last-1 into js, with offset[i + 1] = the count so
+// far, in two copies like the pair loops (hydro/pairs.hpp): portable, and AVX2 + FMA.
+template <int D>
+std::size_t select_pairs(std::size_t first, std::size_t last, const NeighbourList& list, const Components<D>& xs,
+                         const std::vector<double>& h, const Vec<D>& L, const Vec<D>& wrap, int* js,
+                         std::vector<std::size_t>& offset) {
+  std::size_t used = 0;
+  for (std::size_t i = first; i < last; ++i) {
+    used += pairs_within<D>(i, list.j.data() + list.offset[i], list.offset[i + 1] - list.offset[i], xs, h, L, wrap,
+                            js + used);
+    offset[i + 1] = used;
+  }
+  return used;
+}
+#ifdef SPH_AVX2_COPY
+template <int D>
+[[gnu::target("avx2,fma"), gnu::flatten]] std::size_t select_pairs_avx2(std::size_t first, std::size_t last,
+                                                                       const NeighbourList& list,
+                                                                       const Components<D>& xs,
+                                                                       const std::vector<double>& h, const Vec<D>& L,
+                                                                       const Vec<D>& wrap, int* js,
+                                                                       std::vector<std::size_t>& offset) {
+  return select_pairs<D>(first, last, list, xs, h, L, wrap, js, offset);
+}
+#endif
 
 // Neighbour lists reused across steps (a Verlet list: 9.4.3's search with a skin). A search at
 // positions x0 and support radii h0 lists the pairs within the padded radii (1 + skin) h0, and
@@ -78,8 +138,10 @@ class VerletList {
   void select(const std::vector<Vec<D>>& x, const std::vector<double>& h, const Box<D>& box) {
     const std::size_t n = x.size();
     const Vec<D> L = box.length(), wrap = box.wrap_factor();
-    active_.offset.assign(n + 1, 0);
+    active_.offset.resize(n + 1);  // every entry is written below
+    active_.offset[0] = 0;
     active_.order = list_.order;
+    copy_components<D>(x, xs_);
     std::vector<std::size_t> base;
 #pragma omp parallel if (n >= parallel_threshold)
     {
@@ -92,17 +154,13 @@ class VerletList {
       const std::size_t first = n * t / nt, last = n * (t + 1) / nt;
       std::vector<int>& js = parts_[t];
       js.resize(std::max(js.size(), list_.offset[last] - list_.offset[first]));
-      std::size_t used = 0;
-      for (std::size_t i = first; i < last; ++i) {
-        const Vec<D> xi = x[i];
-        const double hi = h[i];
-        for (int j : list_.of(i)) {  // written always, kept by advancing: no branch to mispredict
-          const double hm = std::max(hi, h[j]);
-          js[used] = j;
-          used += min_image<D>(xi - x[j], L, wrap).squaredNorm() < hm * hm;
-        }
-        active_.offset[i + 1] = used;
-      }
+      std::size_t used;
+#ifdef SPH_AVX2_COPY
+      if (D >= 2 && isa_path() == IsaPath::avx2)
+        used = select_pairs_avx2<D>(first, last, list_, xs_, h, L, wrap, js.data(), active_.offset);
+      else
+#endif
+        used = select_pairs<D>(first, last, list_, xs_, h, L, wrap, js.data(), active_.offset);
       base[t + 1] = used;
 #pragma omp barrier
 #pragma omp single
@@ -117,6 +175,7 @@ class VerletList {
   double skin_, used_skin_ = 0.0;
   NeighbourList list_, active_;
   std::vector<std::vector<int>> parts_;  // select's buffers, one a thread
+  Components<D> xs_;                      // the positions select reads
   GridSearchBuffers<D> buffers_;          // the search's, kept likewise
   std::vector<double> reach_;             // the padded radii searched
   std::vector<Vec<D>> x0_;
