@@ -26,6 +26,7 @@ struct ConductionParams {
 // Brookshaw form (69): one pass, first kernel derivatives only.
 template <int D>
 struct BrookshawConduction {
+  static constexpr Writes writes{.dudt = true};
   ConductionParams k;
   void pair(const Particles<D>& p, PairSums<D>& s, const Pair<D>& pr) const {
     const double Ti = p.u[pr.i] / k.c_v, Tj = p.u[pr.j] / k.c_v;
@@ -37,6 +38,7 @@ struct BrookshawConduction {
 // its divergence by (58) or (59).
 template <int D, class Form>
 struct TwoPassConduction {
+  static constexpr Writes writes{.dudt = true};
   ConductionParams k;
   std::vector<Vec<D>> gradT;
   void prepare(const Particles<D>& p, const Neighbourhood<D>& nb) {

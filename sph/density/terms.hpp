@@ -18,6 +18,7 @@ enum class ContinuityForm { direct29, difference33 };
 
 template <int D, ContinuityForm F>
 struct ContinuityDensity {
+  static constexpr Writes writes{.drhodt = true};
   void pair(const Particles<D>& p, PairSums<D>& s, const Pair<D>& q) const {
     if constexpr (F == ContinuityForm::direct29)
       s.drhodt -= p.m[q.j] * q.vj.dot(q.gradW);  // (29)

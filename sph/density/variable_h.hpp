@@ -19,6 +19,7 @@ void smoothing_length_from_density(Particles<D>& p, double hfact) {
 
 template <int D>
 struct SmoothingLengthRate {
+  static constexpr Writes writes{.dhdt = true};
   void pair(const Particles<D>& p, PairSums<D>& s, const Pair<D>& q) const {
     s.dhdt += p.h[q.i] / (D * p.rho[q.i]) * p.m[q.j] * (q.vj - q.vi).dot(q.gradW);  // (53)
   }

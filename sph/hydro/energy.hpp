@@ -9,6 +9,7 @@ enum class EnergyForm { direct37, difference38, swapped40 };
 
 template <int D, EnergyForm F>
 struct EnergyAsymmetric {
+  static constexpr Writes writes{.dudt = true};
   void pair(const Particles<D>& p, PairSums<D>& s, const Pair<D>& q) const {
     const double w = p.m[q.j] / (p.rho[q.i] * p.rho[q.j]);
     if constexpr (F == EnergyForm::direct37)
@@ -25,6 +26,7 @@ struct EnergyAsymmetric {
 // the matching EulerSymmetric, dE_tot/dt = 0 exactly (9.5.3, (96)-(104)).
 template <int D, class Lambda>
 struct EnergySymmetric {
+  static constexpr Writes writes{.dudt = true};
   Lambda lambda{};
   void pair(const Particles<D>& p, PairSums<D>& s, const Pair<D>& q) const {
     s.dudt += 0.5 * p.m[q.j] * lambda.factor(p.p[q.i], p.p[q.j], p.rho[q.i], p.rho[q.j]) *

@@ -26,6 +26,7 @@ struct LambdaGeneral {  // (25) with any lambda
 // Not antisymmetric in i, j: momentum is not conserved.
 template <int D>
 struct EulerDirect {
+  static constexpr Writes writes{.dvdt = true};
   void pair(const Particles<D>& p, PairSums<D>& s, const Pair<D>& q) const {
     s.dvdt -= (p.m[q.j] * p.p[q.j] / (p.rho[q.i] * p.rho[q.j])) * q.gradW;
   }
@@ -34,6 +35,7 @@ struct EulerDirect {
 // Euler equation, symmetric forms (23), (25), (26): dv_i/dt = -sum_j m_j P_ij grad_i W_ij.
 template <int D, class Lambda>
 struct EulerSymmetric {
+  static constexpr Writes writes{.dvdt = true};
   Lambda lambda{};
   void pair(const Particles<D>& p, PairSums<D>& s, const Pair<D>& q) const {
     s.dvdt -= (p.m[q.j] * lambda.factor(p.p[q.i], p.p[q.j], p.rho[q.i], p.rho[q.j])) * q.gradW;

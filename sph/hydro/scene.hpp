@@ -32,6 +32,17 @@ struct PairSums {
   double dudt = 0.0, drhodt = 0.0, dhdt = 0.0, mu_max = 0.0;
 };
 
+// The PairSums a term's pair() adds to, declared by the term as `static constexpr Writes writes`:
+// the pair loop sums only what some term of the scene writes (a sum the scene never adds to costs
+// a load and an add a pair otherwise). A term that writes what it does not declare loses it: the
+// direct-sum test of every hydro term (verification/tests/hydro.cpp) and the heat cases fail.
+struct Writes {
+  bool dvdt = false, dudt = false, drhodt = false, dhdt = false, mu_max = false;
+  constexpr Writes operator|(const Writes& o) const {
+    return {dvdt || o.dvdt, dudt || o.dudt, drhodt || o.drhodt, dhdt || o.dhdt, mu_max || o.mu_max};
+  }
+};
+
 // One interacting pair as the pair loop hands it to the terms: r_ij = r_i - r_j (nearest
 // image), |r_ij|, the symmetric h_ij, grad_i W_ij(h_ij) and the velocities v_i, v_j (the terms
 // read them here, not from the particles: the pair loop gathers them from one array per
@@ -45,6 +56,17 @@ struct Pair {
   Vec<D> gradW, vi, vj;
 };
 
+// What term T writes in the pair loop (nothing without pair()).
+template <int D, class T>
+constexpr Writes writes_of() {
+  if constexpr (requires(const T& t, const Particles<D>& p, PairSums<D>& s, const Pair<D>& q) { t.pair(p, s, q); }) {
+    static_assert(requires { T::writes; }, "a term with pair() declares what it writes: static constexpr Writes writes");
+    return T::writes;
+  } else {
+    return {};
+  }
+}
+
 // The particles with the geometry their pair loops need.
 template <int D>
 struct Neighbourhood {
@@ -57,8 +79,9 @@ struct Neighbourhood {
 //   void pair(const Particles<D>&, PairSums<D>&, const Pair<D>&)           inside it (adds the pair's share)
 //   void finish(const Particles<D>&, const Neighbourhood<D>&, Derivatives<D>&)  after it
 // The pair loop is a fold over the terms that have pair(): a term the scene does not list is not
-// compiled into it, and no flag is tested per pair. pair() must not branch on the pair, and reads
-// velocities from the Pair: then the loop vectorises across pairs (sums_of below).
+// compiled into it, and no flag is tested per pair. A term with pair() declares what it writes
+// (Writes above). pair() must not branch on the pair, and reads velocities from the Pair: then the
+// loop vectorises across pairs (sums_of below).
 template <int D, class... Terms>
 struct Scene {
   static constexpr int dim = D;
@@ -103,11 +126,12 @@ struct Scene {
     // 1 inside, 0 beyond h_ij, multiplied rather than selected: GCC 12 would otherwise load the
     // fields under the mask, as masked gathers it does not emulate (and does not vectorise).
     const double in = b.r[t] < b.h[t] ? 1.0 : 0.0;
-    for (int k = 0; k < D; ++k) sh.dvdt[k][t] = in * s.dvdt[k];
-    sh.dudt[t] = in * s.dudt;
-    sh.drhodt[t] = in * s.drhodt;
-    sh.dhdt[t] = in * s.dhdt;
-    sh.mu_max[t] = in * s.mu_max;
+    if constexpr (written.dvdt)
+      for (int k = 0; k < D; ++k) sh.dvdt[k][t] = in * s.dvdt[k];
+    if constexpr (written.dudt) sh.dudt[t] = in * s.dudt;
+    if constexpr (written.drhodt) sh.drhodt[t] = in * s.drhodt;
+    if constexpr (written.dhdt) sh.dhdt[t] = in * s.dhdt;
+    if constexpr (written.mu_max) sh.mu_max[t] = in * s.mu_max;
   }
 
   // Particle i's sums over its listed pairs, in batches (hydro/pairs.hpp): the batch's geometry
@@ -134,11 +158,12 @@ struct Scene {
       // Adding a share of +0 leaves a sum that starts at +0 unchanged, so the pairs beyond h_ij
       // need no branch here either.
       for (int t = 0; t < nb; ++t) {
-        for (int k = 0; k < D; ++k) acc.dvdt[k] += sh.dvdt[k][t];
-        acc.dudt += sh.dudt[t];
-        acc.drhodt += sh.drhodt[t];
-        acc.dhdt += sh.dhdt[t];
-        acc.mu_max = std::max(acc.mu_max, sh.mu_max[t]);
+        if constexpr (written.dvdt)
+          for (int k = 0; k < D; ++k) acc.dvdt[k] += sh.dvdt[k][t];
+        if constexpr (written.dudt) acc.dudt += sh.dudt[t];
+        if constexpr (written.drhodt) acc.drhodt += sh.drhodt[t];
+        if constexpr (written.dhdt) acc.dhdt += sh.dhdt[t];
+        if constexpr (written.mu_max) acc.mu_max = std::max(acc.mu_max, sh.mu_max[t]);
       }
     }
     d.dvdt[i] = acc.dvdt;
@@ -152,6 +177,8 @@ struct Scene {
   static constexpr bool has_pair = requires(T& t, const Particles<D>& p, PairSums<D>& s, const Pair<D>& pr) {
     t.pair(p, s, pr);
   };
+  // What the scene's terms write, together.
+  static constexpr Writes written = (Writes{} | ... | writes_of<D, Terms>());
   template <class T>
   static void prepare(T& t, Particles<D>& p, const Neighbourhood<D>& nb) {
     if constexpr (requires { t.prepare(p, nb); }) t.prepare(p, nb);

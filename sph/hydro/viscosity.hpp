@@ -12,6 +12,7 @@ namespace sph {
 // acts as 2 alpha and beta as 4 beta).
 template <int D>
 struct ArtificialViscosity {
+  static constexpr Writes writes{.dvdt = true, .dudt = true, .mu_max = true};
   double alpha = 1.0, beta = 2.0, eps = 0.01, h_scale = 0.5;
 
   // Branch-free: a receding pair has v_ij . r_ij clipped to 0, so mu_ij = Pi_ij = 0 (45) without
