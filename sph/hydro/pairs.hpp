@@ -42,6 +42,18 @@ Components<D> components(const std::vector<Vec<D>>& x) {
   return xs;
 }
 
+// |r_i - r_j|^2 at the nearest image, from positions held one array per dimension: the distance
+// of the vectorised pair loops (density, list selection).
+template <int D>
+inline double distance2(std::size_t i, int j, const Components<D>& xs, const Vec<D>& L, const Vec<D>& wrap) {
+  double r2 = 0.0;
+  for (int d = 0; d < D; ++d) {
+    const double dx = min_image(xs[d][i] - xs[d][j], L[d], wrap[d]);
+    r2 += dx * dx;
+  }
+  return r2;
+}
+
 // The geometry of a batch of listed pairs (i, j_t), t < nb: r_ij = r_i - r_j at the nearest image
 // (dx[d][t]), |r_ij|, h_ij and the factor g_ij = K::dWdr(|r_ij|, h_ij) / |r_ij| of
 // grad_i W_ij = g_ij r_ij (9) (0 at r = 0).
@@ -113,12 +125,7 @@ inline double weight_sum_of(std::size_t i, const Components<D>& xs, const std::v
 #pragma omp simd
     for (int t = 0; t < nb; ++t) {
       const int j = js[t0 + t];
-      double r2 = 0.0;
-      for (int d = 0; d < D; ++d) {
-        const double dx = min_image(xs[d][i] - xs[d][j], L[d], wrap[d]);
-        r2 += dx * dx;
-      }
-      value[t] = g(j, std::sqrt(r2), h_ij(hi, h[j]));
+      value[t] = g(j, std::sqrt(distance2<D>(i, j, xs, L, wrap)), h_ij(hi, h[j]));
     }
     for (int t = 0; t < nb; ++t) sum += value[t];
   }

@@ -28,13 +28,8 @@ inline std::size_t pairs_within(std::size_t i, const int* cj, std::size_t count,
 #pragma omp simd
     for (int t = 0; t < nb; ++t) {
       const int j = cj[t0 + t];
-      double r2 = 0.0;
-      for (int d = 0; d < D; ++d) {
-        const double dx = min_image(xs[d][i] - xs[d][j], L[d], wrap[d]);
-        r2 += dx * dx;
-      }
       const double hm = std::max(hi, h[j]);
-      keep[t] = r2 < hm * hm;
+      keep[t] = distance2<D>(i, j, xs, L, wrap) < hm * hm;
     }
     for (int t = 0; t < nb; ++t) {
       js[used] = cj[t0 + t];
