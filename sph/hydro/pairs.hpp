@@ -84,8 +84,9 @@ extern template void pair_geometry<3, CubicSpline<3>>(bool, std::size_t, const i
 // the pairs that interact (|r_ij| < h_ij: W_ij and grad W_ij vanish beyond): f(acc, i, j, r_ij,
 // |r_ij|, h_ij, g_ij) adds pair j's share to acc (a local, so the sum stays in registers and no
 // store inside the loop can alias the particle data the next pair reads), and store(i, acc) writes
-// i's outputs once. The sums are in list order whatever the vector width. The 3D force loop of
-// the bench: 15.9 -> 9.7 ns a pair on the AVX2 path (measured, N = 125,000).
+// i's outputs once. The sums are in list order whatever the vector width. The loop of the kernel
+// and Laplacian interpolants (for_each_pair); a scene's terms go through Scene::sums_of, which
+// also vectorises the terms.
 template <int D, class K, class Acc, class F, class Store>
 inline void pairs_of(std::size_t i, bool avx2, const Components<D>& xs, const std::vector<double>& h,
                      const NeighbourList& nl, const Vec<D>& L, const Vec<D>& wrap, F& f, Store& store) {

@@ -155,8 +155,8 @@ struct Scene {
       pair_geometry<D, CubicSpline<D>>(avx2, i, js + t0, nb, xs, p.h, L, wrap, b);
 #pragma omp simd
       for (int t = 0; t < nb; ++t) share(t, i, js[t0 + t], p, vi, vs, b, sh);
-      // Adding a share of +0 leaves a sum that starts at +0 unchanged, so the pairs beyond h_ij
-      // need no branch here either.
+      // Adding a share of +0 or -0 (0 times the pair's value) leaves a sum that starts at +0
+      // unchanged, so the pairs beyond h_ij need no branch here either.
       for (int t = 0; t < nb; ++t) {
         if constexpr (written.dvdt)
           for (int k = 0; k < D; ++k) acc.dvdt[k] += sh.dvdt[k][t];
