@@ -5,10 +5,11 @@
 
 namespace sph {
 
-// Instruction-set path of the pair loops (hydro/pairs.hpp). The loops of 2D and 3D scenes are
-// compiled twice, for the portable default and for x86-64 with AVX2 and FMA, and the path is chosen
-// once at run time: the fastest the CPU supports, or the one the environment variable SPHV_ISA
-// names ("portable" or "avx2"). FMA contraction rounds differently, so results are reproducible for
+// Instruction-set path of the pair loops (hydro/pairs.hpp) and the tree gravity walk
+// (gravity/tree_gravity.cpp). The loops of 2D and 3D scenes and the walk are compiled twice, for
+// the portable default and for x86-64 with AVX2 and FMA, and the path is chosen once at run time:
+// the fastest the CPU supports, or the one the environment variable SPHV_ISA names ("portable"
+// or "avx2"). FMA contraction rounds differently, so results are reproducible for
 // a given path (and thread count independent on each), and a run's provenance records the path.
 enum class IsaPath { portable, avx2 };
 

@@ -1,7 +1,35 @@
-// The tree walks of sph/gravity/tree_gravity.hpp, compiled once.
+// The tree walks of sph/gravity/tree_gravity.hpp, compiled once per method and instruction-set
+// path (core/isa.hpp): the group walk in a portable copy and an AVX2 + FMA copy.
 #include "sph/gravity/tree_gravity.hpp"
 
+#include "sph/core/isa.hpp"
+
 namespace sph {
+
+namespace {
+template <Multipole M, Opening O>
+[[gnu::flatten]] void group_portable(const detail::Walk& w, const detail::Lanes& in, detail::Group& g) {
+  detail::group_field<M, O>(w, in, g);
+}
+
+#if defined(__x86_64__) && defined(__GNUC__)
+template <Multipole M, Opening O>
+[[gnu::flatten, gnu::target("avx2,fma")]] void group_avx2(const detail::Walk& w, const detail::Lanes& in,
+                                                          detail::Group& g) {
+  detail::group_field<M, O>(w, in, g);
+}
+#endif
+
+template <Multipole M, Opening O>
+GravityField field(const Tree<3>& t, const std::vector<Vec<3>>& x, const std::vector<double>& m,
+                   const GravityOptions& o, const std::vector<Vec<3>>& targets, bool at_particles) {
+  detail::GroupField group = group_portable<M, O>;
+#if defined(__x86_64__) && defined(__GNUC__)
+  if (isa_path() == IsaPath::avx2) group = group_avx2<M, O>;
+#endif
+  return detail::field(detail::walk_of<O>(t, x, m, o), targets, at_particles, group);
+}
+}  // namespace
 
 GravityField tree_gravity_at(const Tree<3>& t, const std::vector<Vec<3>>& x, const std::vector<double>& m,
                              const GravityOptions& o, const std::vector<Vec<3>>& targets, bool at_particles) {
@@ -10,10 +38,10 @@ GravityField tree_gravity_at(const Tree<3>& t, const std::vector<Vec<3>>& x, con
   using enum Multipole;
   using enum Opening;
   if (o.multipole == monopole)
-    return o.opening == plain ? detail::field<monopole, plain>(t, x, m, o, targets, at_particles)
-                              : detail::field<monopole, robust>(t, x, m, o, targets, at_particles);
-  return o.opening == plain ? detail::field<quadrupole, plain>(t, x, m, o, targets, at_particles)
-                            : detail::field<quadrupole, robust>(t, x, m, o, targets, at_particles);
+    return o.opening == plain ? field<monopole, plain>(t, x, m, o, targets, at_particles)
+                              : field<monopole, robust>(t, x, m, o, targets, at_particles);
+  return o.opening == plain ? field<quadrupole, plain>(t, x, m, o, targets, at_particles)
+                            : field<quadrupole, robust>(t, x, m, o, targets, at_particles);
 }
 
 }  // namespace sph

@@ -1,4 +1,6 @@
 #pragma once
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <stdexcept>
@@ -37,97 +39,243 @@ struct GravityField {
 
 namespace detail {
 
-// Potential and acceleration of a node at y = r - r_CM, expanded about its centre of mass
-// ((81) with the dipole (86) zero) as a Taylor series of the softened Green's function
-// g = (|y|^2 + eps^2)^(-1/2): phi = -G [M g + 1/2 S_ab d_a d_b g]. With eps = 0 the second term
-// is (81)'s -G Q_ab y_a y_b / (2 r^5), Q = 3 S - tr(S) I (84). a = -grad phi, so the quadrupole
-// enters the force.
-template <Multipole M>
-inline void add_node(const Tree<3>::Node& nd, const Vec<3>& y, double G, double eps2, Vec<3>& a,
-                     double& phi) {
-  const double s2 = y.squaredNorm() + eps2, inv = 1.0 / std::sqrt(s2), inv2 = inv * inv;
-  const double inv3 = inv * inv2;
-  phi -= G * nd.mass * inv;
-  a -= (G * nd.mass * inv3) * y;
-  if constexpr (M == Multipole::quadrupole) {
-    const Vec<3> Sy = nd.S * y;
-    const double ySy = y.dot(Sy), tr = nd.S.trace(), inv5 = inv3 * inv2;
-    phi -= 0.5 * G * (3.0 * ySy * inv5 - tr * inv3);
-    a += G * inv5 * (3.0 * Sy + (1.5 * tr - 7.5 * ySy * inv2) * y);
+// The walk's sources: entries 0 .. nodes - 1 are the tree's nodes (centre of mass, G M, second
+// moment S), entries nodes + q the particles in tree order, with S = 0, for which a node's
+// expansion below reduces to a Plummer point mass (77). One record per source: a listed source's
+// fields are read together.
+struct Source {
+  double x, y, z, GM, S00, S01, S02, S11, S12, S22, tr, pad;
+};
+
+inline std::vector<Source> sources_of(const Tree<3>& t, const std::vector<Vec<3>>& x, const std::vector<double>& m,
+                                      double G) {
+  const std::size_t nodes = t.nodes.size();
+  std::vector<Source> s(nodes + t.order.size(), Source{});
+  for (std::size_t k = 0; k < s.size(); ++k) {
+    const bool node = k < nodes;
+    const Vec<3>& r = node ? t.nodes[k].com : x[t.order[k - nodes]];
+    s[k].x = r[0], s[k].y = r[1], s[k].z = r[2];
+    s[k].GM = G * (node ? t.nodes[k].mass : m[t.order[k - nodes]]);
+    if (!node) continue;
+    const auto& S = t.nodes[k].S;  // symmetric: built from sums of m dx dx^T
+    s[k].S00 = S(0, 0), s[k].S01 = S(0, 1), s[k].S02 = S(0, 2), s[k].S11 = S(1, 1), s[k].S12 = S(1, 2);
+    s[k].S22 = S(2, 2), s[k].tr = S.trace();
   }
+  return s;
 }
 
-// Squared distance from the centre of mass beyond which a node is accepted:
-// plain (d / theta)^2, robust (d / theta + delta)^2.
+// Potential and acceleration at r of the sources list[0 .. n), added in list order. A node's is
+// its expansion about the centre of mass, y = r - r_CM ((81) with the dipole (86) zero), as a
+// Taylor series of the softened Green's function g = (|y|^2 + eps^2)^(-1/2):
+// phi = -G [M g + 1/2 S_ab d_a d_b g]. With eps = 0 the second term is (81)'s
+// -G Q_ab y_a y_b / (2 r^5), Q = 3 S - tr(S) I (84). a = -grad phi, so the quadrupole enters the
+// force. The terms are computed in vectorised batches, then summed in list order.
+template <Multipole M>
+inline void sum_sources(const std::vector<Source>& s, const int* list, int n, double r0, double r1, double r2,
+                        double G, double eps2, double& ax, double& ay, double& az, double& phi) {
+  constexpr int batch = 64;
+  double dphi[batch], d0[batch], d1[batch], d2[batch];
+  const double hG = 0.5 * G;
+  double p = 0.0, a0 = 0.0, a1 = 0.0, a2 = 0.0;
+  for (int b = 0; b < n; b += batch) {
+    const int nb = std::min(batch, n - b);
+    for (int e = 0; e < nb; ++e) {
+      const int j = list[b + e];
+      const Source& c = s[j];
+      const double y0 = r0 - c.x, y1 = r1 - c.y, y2 = r2 - c.z, GM = c.GM;
+      const double inv = 1.0 / std::sqrt(y0 * y0 + y1 * y1 + y2 * y2 + eps2), inv2 = inv * inv, inv3 = inv * inv2;
+      double f = -(GM * inv), k = GM * inv3, g0 = -(k * y0), g1 = -(k * y1), g2 = -(k * y2);
+      if constexpr (M == Multipole::quadrupole) {
+        const double S00 = c.S00, S01 = c.S01, S02 = c.S02, S11 = c.S11, S12 = c.S12, S22 = c.S22;
+        const double Sy0 = S00 * y0 + S01 * y1 + S02 * y2, Sy1 = S01 * y0 + S11 * y1 + S12 * y2,
+                     Sy2 = S02 * y0 + S12 * y1 + S22 * y2, tr = c.tr;
+        const double ySy = y0 * Sy0 + y1 * Sy1 + y2 * Sy2, inv5 = inv3 * inv2;
+        const double q = G * inv5, t = 1.5 * tr - 7.5 * ySy * inv2;
+        f -= hG * (3.0 * ySy * inv5 - tr * inv3);
+        g0 += q * (3.0 * Sy0 + t * y0), g1 += q * (3.0 * Sy1 + t * y1), g2 += q * (3.0 * Sy2 + t * y2);
+      }
+      dphi[e] = f, d0[e] = g0, d1[e] = g1, d2[e] = g2;
+    }
+    for (int e = 0; e < nb; ++e) p += dphi[e], a0 += d0[e], a1 += d1[e], a2 += d2[e];
+  }
+  ax = a0, ay = a1, az = a2, phi = p;
+}
+
+// What the walk reads of a node to decide, in one cache line (Cell): the centre of mass, the
+// squared distance from it beyond which the node is accepted (plain (d / theta)^2, robust
+// (d / theta + delta)^2), the cell's centre and half its edge; and where its children or
+// particles are (Link).
+struct Cell {
+  double cx, cy, cz, rc2, mx, my, mz, half;
+};
+struct Link {
+  int first_child, n_children, begin, end;
+};
+
 template <Opening O>
-std::vector<double> critical_radius2(const Tree<3>& t, double theta) {
-  std::vector<double> rc2(t.nodes.size());
-  for (std::size_t k = 0; k < rc2.size(); ++k) {
+void cells_of(const Tree<3>& t, double theta, std::vector<Cell>& cells, std::vector<Link>& links) {
+  cells.resize(t.nodes.size()), links.resize(t.nodes.size());
+  for (std::size_t k = 0; k < cells.size(); ++k) {
     const auto& nd = t.nodes[k];
     double rc = nd.size / theta;
     if constexpr (O == Opening::robust) rc += (nd.com - nd.centre).norm();
-    rc2[k] = rc * rc;
+    cells[k] = {nd.com[0], nd.com[1], nd.com[2], rc * rc, nd.centre[0], nd.centre[1], nd.centre[2], 0.5 * nd.size};
+    links[k] = {nd.first_child, nd.n_children, nd.begin, nd.end};
   }
-  return rc2;
 }
+
+// Targets are walked in groups of up to group_size consecutive targets of the visiting order
+// (tree order for the particles themselves, so a group is a small patch of space). The group
+// shares the traversal: one stack and one fetch of each node for all its targets. Every decision
+// is still made per target, as in that target's own walk (9.4.7): the walk lists, per target and
+// in the order of its own walk, the nodes it accepts and the leaf particles it meets.
+constexpr int group_size = 32;
+using Lanes = std::array<unsigned char, group_size>;  // 1: the target takes part at this node
+
+struct Group {
+  alignas(64) double x[group_size], y[group_size], z[group_size];  // target positions
+  long self[group_size];  // the target's own particle index (-1: a point that is no particle)
+  double ax[group_size], ay[group_size], az[group_size], phi[group_size];  // the field found
+  int length[group_size];
+  int capacity = 0;
+  std::vector<int> lists;  // target l's sources at lists[l * capacity ...]
+
+  // Room for one more source in every list.
+  void reserve_one(int longest) {
+    if (longest < capacity) return;
+    const int c = std::max(2 * capacity, 256);
+    std::vector<int> grown(static_cast<std::size_t>(group_size) * c);
+    for (int l = 0; l < group_size; ++l)
+      std::copy_n(lists.begin() + static_cast<std::ptrdiff_t>(l) * capacity, length[l],
+                  grown.begin() + static_cast<std::ptrdiff_t>(l) * c);
+    lists.swap(grown);
+    capacity = c;
+  }
+  // Source j appended to the lists of the targets with take[l] (a branch-free store to all).
+  void append(int j, const Lanes& take, int& longest) {
+    reserve_one(longest);
+    for (int l = 0; l < group_size; ++l) {
+      lists[static_cast<std::size_t>(l) * capacity + length[l]] = j;
+      length[l] += take[l];
+    }
+    ++longest;
+  }
+  std::vector<int> todo;  // the walk's stack of nodes, and the targets taking part at each
+  std::vector<Lanes> todo_lanes;
+};
+
+// Splits the targets taking part at a node (its cell) into those that accept it (acc) and those
+// that open it (open); tells whether any accepts and whether any opens.
+template <Opening O>
+inline void accept(const Cell& cell, const Group& g, const Lanes& in, Lanes& acc, Lanes& open, bool& any_acc,
+                   bool& any_open) {
+  const double c0 = cell.cx, c1 = cell.cy, c2 = cell.cz, rc2 = cell.rc2;
+  const double m0 = cell.mx, m1 = cell.my, m2 = cell.mz, half = cell.half;
+  unsigned char some_acc = 0, some_open = 0;
+  for (int l = 0; l < group_size; ++l) {
+    const double y0 = g.x[l] - c0, y1 = g.y[l] - c1, y2 = g.z[l] - c2;
+    bool ok = y0 * y0 + (y1 * y1 + y2 * y2) > rc2;  // |y|^2 summed as Eigen's squaredNorm
+    if constexpr (O == Opening::robust)  // never the cell that contains the target
+      ok &= (std::abs(g.x[l] - m0) > half) | (std::abs(g.y[l] - m1) > half) | (std::abs(g.z[l] - m2) > half);
+    acc[l] = in[l] & ok;
+    open[l] = in[l] & !ok;
+    some_acc |= acc[l], some_open |= open[l];
+  }
+  any_acc = some_acc, any_open = some_open;
+}
+
+// What every walk reads: the nodes' cells and links, the particles' tree order, the sources.
+struct Walk {
+  std::vector<Cell> cells;
+  std::vector<Link> links;
+  std::vector<int> order;
+  std::vector<Source> sources;
+  double G, eps2;
+};
 
 template <Opening O>
-inline bool accept(const Tree<3>::Node& nd, double rc2, const Vec<3>& r) {
-  if ((r - nd.com).squaredNorm() <= rc2) return false;
-  if constexpr (O == Opening::robust) return !((r - nd.centre).cwiseAbs().array() <= 0.5 * nd.size).all();
-  return true;
+Walk walk_of(const Tree<3>& t, const std::vector<Vec<3>>& x, const std::vector<double>& m, const GravityOptions& o) {
+  Walk w{{}, {}, t.order, sources_of(t, x, m, o.G), o.G, o.eps * o.eps};
+  cells_of<O>(t, o.theta, w.cells, w.links);
+  return w;
 }
 
-// Field at point r from all particles except `self` (-1 for a point that is no particle).
-// xs, ms: positions and masses in tree order (leaf particles contiguous in memory).
-template <Multipole M, Opening O>
-void walk(const Tree<3>& t, const std::vector<Vec<3>>& xs, const std::vector<double>& ms,
-          const GravityOptions& o, const std::vector<double>& rc2, const Vec<3>& r, long self,
-          std::vector<int>& stack, Vec<3>& a,
-          double& phi, long& count) {
-  const double eps2 = o.eps * o.eps;
-  a.setZero();
-  phi = 0.0;
-  count = 0;
-  if (t.nodes.empty()) return;
-  stack.assign(1, 0);
-  while (!stack.empty()) {
-    const int k = stack.back();
-    const auto& nd = t.nodes[k];
-    stack.pop_back();
-    if (nd.leaf()) {
-      for (int q = nd.begin; q < nd.end; ++q) {
-        if (t.order[q] == self) continue;
-        add_plummer<3>(r - xs[q], o.G * ms[q], eps2, a, phi);
-        ++count;
-      }
-    } else if (accept<O>(nd, rc2[k], r)) {
-      add_node<M>(nd, r - nd.com, o.G, eps2, a, phi);
-      ++count;
-    } else {
-      for (int c = 0; c < nd.n_children; ++c) stack.push_back(nd.first_child + c);
+// Lists the sources of the group's targets (the targets taking part: in). The children of an
+// opened node that are leaves are listed at once, the others walked after them: every target's list
+// follows from its own decisions alone.
+template <Opening O>
+void walk(const Walk& w, const Lanes& in, Group& g) {
+  std::fill_n(g.length, group_size, 0);
+  int longest = 0;
+  const int nodes = static_cast<int>(w.links.size());
+  Lanes acc, open;
+  auto list_leaf = [&](const Link& leaf, const Lanes& here) {
+    for (int q = leaf.begin; q < leaf.end; ++q) {
+      for (int l = 0; l < group_size; ++l) acc[l] = here[l] & (g.self[l] != w.order[q]);
+      g.append(nodes + q, acc, longest);
     }
+  };
+  if (w.links.empty()) return;
+  if (w.links[0].n_children == 0) return list_leaf(w.links[0], in);
+  g.todo.assign(1, 0);
+  g.todo_lanes.assign(1, in);
+  while (!g.todo.empty()) {
+    const int k = g.todo.back();
+    const Lanes here = g.todo_lanes.back();
+    g.todo.pop_back(), g.todo_lanes.pop_back();
+    bool any_acc, any_open;
+    accept<O>(w.cells[k], g, here, acc, open, any_acc, any_open);
+    if (any_acc) g.append(k, acc, longest);
+    if (!any_open) continue;
+    const Lanes opened = open;
+    const Link& nd = w.links[k];
+    for (int c = nd.first_child; c < nd.first_child + nd.n_children; ++c)
+      if (w.links[c].n_children == 0)
+        list_leaf(w.links[c], opened);
+      else
+        g.todo.push_back(c), g.todo_lanes.push_back(opened);
   }
 }
 
+// The field at a group's targets: the walk lists each target's sources, then they are summed.
 template <Multipole M, Opening O>
-GravityField field(const Tree<3>& t, const std::vector<Vec<3>>& x, const std::vector<double>& m,
-                   const GravityOptions& o, const std::vector<Vec<3>>& targets, bool at_particles) {
+void group_field(const Walk& w, const Lanes& in, Group& g) {
+  walk<O>(w, in, g);
+  for (int l = 0; l < group_size; ++l)
+    sum_sources<M>(w.sources, g.lists.data() + static_cast<std::size_t>(l) * g.capacity, g.length[l], g.x[l], g.y[l],
+                   g.z[l], w.G, w.eps2, g.ax[l], g.ay[l], g.az[l], g.phi[l]);
+}
+using GroupField = void (*)(const Walk&, const Lanes&, Group&);
+
+// Every target's field, the groups' fields found by group (group_field, in the copy for this
+// run's instruction-set path: tree_gravity.cpp).
+inline GravityField field(const Walk& w, const std::vector<Vec<3>>& targets, bool at_particles, GroupField group) {
   const std::size_t n = targets.size();
   GravityField f{std::vector<Vec<3>>(n), std::vector<double>(n), std::vector<long>(n)};
-  const std::vector<double> rc2 = critical_radius2<O>(t, o.theta);
-  std::vector<Vec<3>> xs(t.order.size());
-  std::vector<double> ms(t.order.size());
-  for (std::size_t q = 0; q < xs.size(); ++q) xs[q] = x[t.order[q]], ms[q] = m[t.order[q]];
+  const std::size_t groups = (n + group_size - 1) / group_size;
 #pragma omp parallel
   {
-    std::vector<int> stack;
-#pragma omp for schedule(dynamic, 64)
-    for (std::size_t k = 0; k < n; ++k) {
-      // Particles are visited in tree order: consecutive walks touch the same nodes (cache).
-      const std::size_t i = at_particles ? static_cast<std::size_t>(t.order[k]) : k;
-      walk<M, O>(t, xs, ms, o, rc2, targets[i], at_particles ? static_cast<long>(i) : -1L, stack, f.a[i], f.phi[i],
-                 f.interactions[i]);
+    Group g;
+#pragma omp for schedule(dynamic, 2)
+    for (std::size_t b = 0; b < groups; ++b) {
+      // Particles are visited in tree order: a group's targets lie close together.
+      const int size = static_cast<int>(std::min<std::size_t>(group_size, n - b * group_size));
+      auto target = [&](int l) {  // spare lanes repeat the last target and take no part
+        const std::size_t k = b * group_size + std::min(l, size - 1);
+        return at_particles ? static_cast<std::size_t>(w.order[k]) : k;
+      };
+      Lanes in{};
+      for (int l = 0; l < group_size; ++l) {
+        const Vec<3>& r = targets[target(l)];
+        g.x[l] = r[0], g.y[l] = r[1], g.z[l] = r[2];
+        g.self[l] = at_particles ? static_cast<long>(target(l)) : -1L;
+        in[l] = l < size;
+      }
+      group(w, in, g);
+      for (int l = 0; l < size; ++l) {
+        const std::size_t i = target(l);
+        f.a[i] = Vec<3>(g.ax[l], g.ay[l], g.az[l]), f.phi[i] = g.phi[l], f.interactions[i] = g.length[l];
+      }
     }
   }
   return f;

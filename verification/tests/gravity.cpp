@@ -12,6 +12,7 @@
 #include "verification/cases/gravity_compare.hpp"
 #include "verification/cases/gravity_models.hpp"
 #include "verification/sweep.hpp"
+#include "verification/tests/isa_path.hpp"
 
 using namespace sphv::gravity;
 using V3 = sph::Vec<3>;
@@ -92,8 +93,62 @@ TEST_CASE("gravity: quadrupole force is -grad phi", "[gravity]") {
   }
 }
 
+// A single target's walk written out from the opening criteria (89) and Barnes' robust one: the
+// number of interactions it counts. The group walk must make each target's decisions exactly so.
+long single_walk_count(const sph::Tree<3>& t, int k, const V3& r, long self, double theta, sph::Opening o) {
+  const auto& nd = t.nodes[k];
+  if (nd.leaf()) {
+    long c = 0;
+    for (int q = nd.begin; q < nd.end; ++q) c += t.order[q] != self;
+    return c;
+  }
+  const bool robust = o == sph::Opening::robust;
+  const double rc = nd.size / theta + (robust ? (nd.com - nd.centre).norm() : 0.0);
+  const bool inside = robust && ((r - nd.centre).cwiseAbs().array() <= 0.5 * nd.size).all();
+  if ((r - nd.com).squaredNorm() > rc * rc && !inside) return 1;
+  long c = 0;
+  for (int q = 0; q < nd.n_children; ++q) c += single_walk_count(t, nd.first_child + q, r, self, theta, o);
+  return c;
+}
+
+// The walk goes in groups of nearby targets (tree_gravity.hpp) on each instruction-set path.
+// A target's interactions are those of its own walk, and its field is the same bit for bit
+// whether it is walked with others or alone.
+TEST_CASE("gravity: the group walk decides per target, as a single target's walk", "[gravity]") {
+  const sph::IsaPath path = GENERATE(sph::IsaPath::portable, sph::IsaPath::avx2);
+  const OnIsaPath on(path);
+  if (!on.supported()) return;
+  INFO("instruction-set path " << sph::isa_name(path));
+  const auto s = clustered(3000, 13);
+  const auto t = sph::build_tree<3>(s.x, s.m);
+  std::vector<V3> points(s.x.begin(), s.x.begin() + 100);
+  for (auto& q : points) q += V3(0.01, -0.02, 0.005);
+  for (const auto o : {sph::Opening::plain, sph::Opening::robust})
+    for (const double theta : {0.5, 0.9}) {
+      INFO("theta " << theta << (o == sph::Opening::robust ? " robust" : " plain"));
+      const sph::GravityOptions go{.theta = theta, .eps = 0.01, .opening = o};
+      const auto f = sph::tree_gravity(t, s.x, s.m, go);
+      long mismatched = 0;
+      for (std::size_t i = 0; i < s.x.size(); ++i)
+        mismatched += f.interactions[i] != single_walk_count(t, 0, s.x[i], static_cast<long>(i), theta, o);
+      CHECK(mismatched == 0);
+      const auto together = sph::tree_gravity_at(t, s.x, s.m, go, points);
+      for (std::size_t k = 0; k < points.size(); ++k) {
+        const auto alone = sph::tree_gravity_at(t, s.x, s.m, go, {points[k]});
+        REQUIRE(alone.interactions[0] == single_walk_count(t, 0, points[k], -1, theta, o));
+        REQUIRE(alone.interactions[0] == together.interactions[k]);
+        REQUIRE(alone.a[0] == together.a[k]);
+        REQUIRE(alone.phi[0] == together.phi[k]);
+      }
+    }
+}
+
 // With every node opened the tree is a direct sum in another order: agreement to round-off.
 TEST_CASE("gravity: tree with theta -> 0 equals the direct sum", "[gravity]") {
+  const sph::IsaPath path = GENERATE(sph::IsaPath::portable, sph::IsaPath::avx2);
+  const OnIsaPath on(path);
+  if (!on.supported()) return;
+  INFO("instruction-set path " << sph::isa_name(path));
   const auto s = uniform_sphere(800, 2);
   const auto t = sph::build_tree<3>(s.x, s.m);
   const auto f = sph::tree_gravity(t, s.x, s.m, {.theta = 1e-6, .eps = 0.01});

@@ -17,6 +17,7 @@
 #include "sph/hydro/euler.hpp"
 #include "sph/hydro/evolve.hpp"
 #include "verification/sweep.hpp"
+#include "verification/tests/isa_path.hpp"
 
 namespace {
 
@@ -121,16 +122,8 @@ struct PairRates {
 // must equal the direct sums, whichever the harness picks.
 TEST_CASE("hydro terms equal a direct sum of the chapter's (22)-(53) on a non-uniform gas", "[hydro]") {
   const sph::IsaPath path = GENERATE(sph::IsaPath::portable, sph::IsaPath::avx2);
-  if (!sph::isa_supported(path)) {
-    WARN("instruction-set path " << sph::isa_name(path) << " not supported by this CPU: not tested");
-    return;
-  }
-  const sph::IsaPath before = sph::isa_path();
-  sph::set_isa_path(path);
-  struct Restore {
-    sph::IsaPath p;
-    ~Restore() { sph::set_isa_path(p); }
-  } restore{before};
+  const OnIsaPath on(path);
+  if (!on.supported()) return;
   INFO("instruction-set path " << sph::isa_name(path));
   constexpr int D = 2;
   const double gamma = 1.4;
