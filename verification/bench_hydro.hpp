@@ -54,8 +54,9 @@ inline HydroTimes time_hydro_step(sph::Particles<3>& p, const sph::Box<3>& box,
   t.pairs = static_cast<double>(nl.pairs());
   t.forces = timer([&] { forces.derivatives(p, Neighbourhood<3>{nl, box}, d); });
   Step step;
+  GridSearchBuffers<3> buffers;  // kept, as evolve's lists keep theirs: fresh ones fault pages in every step
   auto derivs = [&](Particles<3>& q, Derivatives<3>& dd) {
-    nl = grid_search<3>(q.x, q.h, box);
+    grid_search<3>(q.x, q.h, box, nl, buffers);
     step.derivatives(q, Neighbourhood<3>{nl, box}, dd);
   };
   derivs(p, d);

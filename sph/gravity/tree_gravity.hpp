@@ -6,12 +6,11 @@
 #include <stdexcept>
 #include <vector>
 
-#include "sph/gravity/plummer.hpp"
 #include "sph/search/tree.hpp"
 
 namespace sph {
 
-// Self-gravity with the Barnes-Hut tree (9.4.7), 3D, Plummer softening eps (the same as
+// Self-gravity with the Barnes-Hut tree (9.4.7), 3D, Plummer softening eps (77) (the same as
 // add_plummer and the direct sum), units of G given.
 enum class Multipole { monopole, quadrupole };
 // plain: accept a node when d / r < theta (89), r = |r_i - r_CM|. Unbounded errors above
