@@ -13,10 +13,15 @@ namespace sph {
 // a given path (and thread count independent on each), and a run's provenance records the path.
 enum class IsaPath { portable, avx2 };
 
+// Defined where the compiler can build the second copy (x86-64, GCC's target attribute).
+#if defined(__x86_64__) && defined(__GNUC__)
+#define SPH_AVX2_COPY 1
+#endif
+
 inline const char* isa_name(IsaPath p) { return p == IsaPath::avx2 ? "avx2" : "portable"; }
 
 inline bool isa_supported(IsaPath p) {
-#if defined(__x86_64__) && defined(__GNUC__)
+#ifdef SPH_AVX2_COPY
   if (p == IsaPath::avx2) return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
 #endif
   return p == IsaPath::portable;

@@ -12,7 +12,7 @@ template <Multipole M, Opening O>
   detail::group_field<M, O>(w, in, g);
 }
 
-#if defined(__x86_64__) && defined(__GNUC__)
+#ifdef SPH_AVX2_COPY
 template <Multipole M, Opening O>
 [[gnu::flatten, gnu::target("avx2,fma")]] void group_avx2(const detail::Walk& w, const detail::Lanes& in,
                                                           detail::Group& g) {
@@ -24,7 +24,7 @@ template <Multipole M, Opening O>
 GravityField field(const Tree<3>& t, const std::vector<Vec<3>>& x, const std::vector<double>& m,
                    const GravityOptions& o, const std::vector<Vec<3>>& targets, bool at_particles) {
   detail::GroupField group = group_portable<M, O>;
-#if defined(__x86_64__) && defined(__GNUC__)
+#ifdef SPH_AVX2_COPY
   if (isa_path() == IsaPath::avx2) group = group_avx2<M, O>;
 #endif
   return detail::field(detail::walk_of<O>(t, x, m, o), targets, at_particles, group);

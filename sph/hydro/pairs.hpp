@@ -11,11 +11,6 @@
 #include "sph/kernel/cubic_spline.hpp"
 #include "sph/search/neighbour_list.hpp"
 
-// The pair loops' second copy, for AVX2 and FMA (core/isa.hpp), where the compiler can build it.
-#if defined(__x86_64__) && defined(__GNUC__)
-#define SPH_AVX2_COPY 1
-#endif
-
 namespace sph {
 
 // Symmetric smoothing length of a pair (errata, 9.4.4): h_ij = (h_i + h_j) / 2.
