@@ -109,6 +109,14 @@ sph::HydroOutcome evolve_gas(sph::Particles<D>& p, const sph::Box<D>& box, const
   };
   return sph::with_energy_form<D>(m.energy, 1.0, with_h);
 }
+// Without extra terms, compiled once for each dimension (extreme_gas_1d.cpp, ...) rather than in
+// every case that evolves gas (noh, sedov, extreme_degenerate): 12 scenes a dimension.
+extern template sph::HydroOutcome evolve_gas<1>(sph::Particles<1>&, const sph::Box<1>&, const Method&,
+                                                sph::HydroHooks<1>);
+extern template sph::HydroOutcome evolve_gas<2>(sph::Particles<2>&, const sph::Box<2>&, const Method&,
+                                                sph::HydroHooks<2>);
+extern template sph::HydroOutcome evolve_gas<3>(sph::Particles<3>&, const sph::Box<3>&, const Method&,
+                                                sph::HydroHooks<3>);
 
 // Mean of value over particles in radial bins [k dr, (k+1) dr), k < bins, around the origin.
 struct Profile {

@@ -51,6 +51,11 @@ Rate make_rate(const ParticleSet<D>& s, const std::string& form, const sph::Cond
   if (form == "flux_57_59") return bind(Difference2Scene<D>{{sph::TwoPassConduction<D, sph::DifferenceForm>{k, {}}}});
   throw InputError("unknown conduction form '" + form + "' (brookshaw, flux_56_58, flux_57_59)");
 }
+// Compiled once (heat_rate.cpp) for the three cases that integrate it (heat, heat_stability,
+// stability_map_heat): three scenes a dimension.
+extern template Rate make_rate<1>(const ParticleSet<1>&, const std::string&, const sph::ConductionParams&);
+extern template Rate make_rate<2>(const ParticleSet<2>&, const std::string&, const sph::ConductionParams&);
+extern template Rate make_rate<3>(const ParticleSet<3>&, const std::string&, const sph::ConductionParams&);
 
 // Largest lattice eigenvalue of the form's operator times the diffusivity chi = K / (rho0 S0 c_v)
 // (the lattice's summation density is rho0 S0): the independent explicit stability bound is 2 / it.

@@ -1,0 +1,6 @@
+// Gas evolved in 1D (extreme_hydro.hpp), instantiated in its own translation unit (parallel builds).
+#include "verification/cases/extreme_hydro.hpp"
+
+namespace sphv::extreme {
+template sph::HydroOutcome evolve_gas<1>(sph::Particles<1>&, const sph::Box<1>&, const Method&, sph::HydroHooks<1>);
+}  // namespace sphv::extreme
