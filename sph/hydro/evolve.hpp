@@ -79,7 +79,7 @@ using SceneRates = std::function<void(Particles<D>&, const Neighbourhood<D>&, De
 template <int D>
 HydroOutcome evolve_rates(const SceneRates<D>& rates, const ArtificialViscosity<D>* visc, Particles<D>& p,
                           const Box<D>& box, const HydroControls& c, const HydroHooks<D>& hooks) {
-  Derivatives<D> d;
+  Derivatives<D> d, at_t;  // at_t: the KDK step's scratch
   HydroOutcome out;
   VerletList<D> lists(c.skin);
   auto derivs = [&](Particles<D>& q, Derivatives<D>& dd) {
@@ -105,7 +105,7 @@ HydroOutcome evolve_rates(const SceneRates<D>& rates, const ArtificialViscosity<
                       : chapter_time_step(p, c.step);
       if (!(dt > 0.0) || !std::isfinite(dt)) return bad_state("time step not positive and finite");
       dt = std::min(dt, c.t_end - out.t);
-      if (c.integrator == IntegratorKind::kdk) kdk_leapfrog_step(p, d, dt, derivs);
+      if (c.integrator == IntegratorKind::kdk) kdk_leapfrog_step(p, d, at_t, dt, derivs);
       else chapter_leapfrog_step(p, d, dt, derivs);
       ++out.steps;
       out.t = (c.t_end - out.t <= dt) ? c.t_end : out.t + dt;

@@ -8,6 +8,7 @@
 #include "sph/core/box.hpp"
 #include "sph/core/isa.hpp"
 #include "sph/core/threads.hpp"
+#include "sph/core/uninitialized.hpp"
 #include "sph/kernel/cubic_spline.hpp"
 #include "sph/search/neighbour_list.hpp"
 
@@ -18,14 +19,15 @@ inline double h_ij(double hi, double hj) { return 0.5 * (hi + hj); }
 
 // A vector field (positions, velocities) as one array per dimension, x_i[d] = xs[d][i]: the pair
 // loops gather them, and a vector gather takes an index times 8 bytes, not times 24 (Vec<3>).
+// Columns are written whole after they are sized (default-initialised, no zeros written first).
 template <int D>
-using Components = std::array<std::vector<double>, D>;
+using Components = std::array<std::vector<double, DefaultInitAllocator<double>>, D>;
 
 template <int D>
 void copy_components(const std::vector<Vec<D>>& x, Components<D>& xs) {
   const std::size_t n = x.size();
   for (int d = 0; d < D; ++d)
-    if (xs[d].size() != n) xs[d] = std::vector<double>(n);  // (resize: a GCC 12 false -Wstringop-overflow)
+    if (xs[d].size() != n) xs[d] = typename Components<D>::value_type(n);  // (resize: a GCC 12 false -Wstringop-overflow)
 #pragma omp parallel for if (n >= parallel_threshold)
   for (std::size_t i = 0; i < n; ++i)
     for (int d = 0; d < D; ++d) xs[d][i] = x[i][d];

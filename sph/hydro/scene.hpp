@@ -16,12 +16,14 @@ template <int D>
 struct Derivatives {
   std::vector<Vec<D>> dvdt;
   std::vector<double> dudt, drhodt, dhdt, mu_max;
-  void reset(std::size_t n) {
-    dvdt.assign(n, Vec<D>::Zero());
-    dudt.assign(n, 0.0);
-    drhodt.assign(n, 0.0);
-    dhdt.assign(n, 0.0);
-    mu_max.assign(n, 0.0);
+  void reset(std::size_t n) {  // zeros written by all threads (7 MB at N = 125,000 in 3D)
+    for (auto* a : {&dudt, &drhodt, &dhdt, &mu_max}) a->resize(n);
+    dvdt.resize(n);
+#pragma omp parallel for if (n >= parallel_threshold)
+    for (std::size_t i = 0; i < n; ++i) {
+      dvdt[i].setZero();
+      dudt[i] = drhodt[i] = dhdt[i] = mu_max[i] = 0.0;
+    }
   }
 };
 

@@ -3,6 +3,8 @@
 #include <span>
 #include <vector>
 
+#include "sph/core/uninitialized.hpp"
+
 namespace sph {
 
 // Interaction partners of every particle in compressed rows: the neighbours of i are
@@ -13,7 +15,7 @@ namespace sph {
 // the particles are stored. Each i's sum is unchanged by the order of the i.
 struct NeighbourList {
   std::vector<std::size_t> offset;
-  std::vector<int> j;
+  std::vector<int, DefaultInitAllocator<int>> j;  // written whole after each resize
   std::vector<int> order;
 
   // The k-th particle a pair loop visits.

@@ -1,4 +1,5 @@
 #pragma once
+#include <utility>
 #include <vector>
 
 #include "sph/core/particles.hpp"
@@ -52,9 +53,10 @@ void chapter_leapfrog_step(Particles<D>& p, Derivatives<D>& d, double dt, Derivs
 // Kick-drift-kick leapfrog, one evaluation per step, symplectic for position-dependent forces.
 // Velocity-dependent rates (viscosity, energy, continuity, (53)) are evaluated at v and the
 // scalars predicted to t + dt (as in Phantom), not at their half-step values: with the half-step
-// values the step is only first order in those terms.
+// values the step is only first order in those terms. at_t is the caller's scratch (it holds the
+// rates at t on exit): kept from step to step, it spares a copy of d each step.
 template <int D, class Derivs>
-void kdk_leapfrog_step(Particles<D>& p, Derivatives<D>& d, double dt, Derivs&& derivs) {
+void kdk_leapfrog_step(Particles<D>& p, Derivatives<D>& d, Derivatives<D>& at_t, double dt, Derivs&& derivs) {
   const std::size_t n = p.size();
 #pragma omp parallel for if (n >= parallel_threshold)
   for (std::size_t i = 0; i < n; ++i) {
@@ -62,10 +64,10 @@ void kdk_leapfrog_step(Particles<D>& p, Derivatives<D>& d, double dt, Derivs&& d
     p.x[i] += dt * p.v[i];           // r(t + dt)
   }
   kick_scalars(p, d, 0.5 * dt);      // scalars at t + dt/2
-  const Derivatives<D> at_t = d;
+  std::swap(at_t, d);                // the rates at t move to at_t; d's arrays are reused
 #pragma omp parallel for if (n >= parallel_threshold)
-  for (std::size_t i = 0; i < n; ++i) p.v[i] += 0.5 * dt * d.dvdt[i];  // predicted v(t + dt)
-  kick_scalars(p, d, 0.5 * dt);      // predicted scalars at t + dt
+  for (std::size_t i = 0; i < n; ++i) p.v[i] += 0.5 * dt * at_t.dvdt[i];  // predicted v(t + dt)
+  kick_scalars(p, at_t, 0.5 * dt);   // predicted scalars at t + dt
   derivs(p, d);                      // rates at t + dt (may overwrite derived scalars, e.g. rho (27))
   // Correct the prediction: y(t + dt) = y(t + dt/2) + dt/2 rate(t + dt). Written as a change of
   // the predicted value so that scalars a scene term sets directly keep the value it set.

@@ -140,13 +140,13 @@ Drifts run_fixed_steps_of(const sph::SceneRates<D>& rates, sph::Particles<D>& p,
     out.angular.push_back((now.L - first.L).norm() / first.L_scale);
     out.energy.push_back(std::abs(energy(p) - E0) / E0);
   };
-  sph::Derivatives<D> d;
+  sph::Derivatives<D> d, at_t;
   try {
     derivs(p, d);  // sets p, c (and rho for summation) of the initial state
     E0 = energy(p);
     record(0);
     for (long s = 1; s <= steps; ++s) {
-      if (integrator == sph::IntegratorKind::kdk) sph::kdk_leapfrog_step(p, d, dt, derivs);
+      if (integrator == sph::IntegratorKind::kdk) sph::kdk_leapfrog_step(p, d, at_t, dt, derivs);
       else sph::chapter_leapfrog_step(p, d, dt, derivs);
       if (auto b = sph::first_bad(p)) {
         out.verdict = sph::unstable_verdict(s, s * dt, *b);

@@ -42,7 +42,7 @@ Track integrate(sph::Particles<3> p, double eps, long n, long orbits, Scheme sch
   none.offset.assign(p.size() + 1, 0);
   const auto box = sph::unit_box<3>(false);
   const sph::Neighbourhood<3> nb{none, box};
-  sph::Derivatives<3> d;
+  sph::Derivatives<3> d, at_t;
   auto derivs = [&](sph::Particles<3>& q, sph::Derivatives<3>& dd) { scene.derivatives(q, nb, dd); };
   derivs(p, d);
   const std::size_t np = p.size();
@@ -55,7 +55,7 @@ Track integrate(sph::Particles<3> p, double eps, long n, long orbits, Scheme sch
   const double dt = two_pi / n;
   const long steps = n * orbits;
   for (long s = 1; s <= steps; ++s) {
-    if (scheme == Scheme::kdk) sph::kdk_leapfrog_step(p, d, dt, derivs);
+    if (scheme == Scheme::kdk) sph::kdk_leapfrog_step(p, d, at_t, dt, derivs);
     else sph::chapter_leapfrog_step(p, d, dt, derivs);
     for (std::size_t i = 0; i < np; ++i) {
       const double de = std::abs(energy(i) - E0[i]) / std::abs(E0[i]);

@@ -1,0 +1,32 @@
+#pragma once
+// An allocator that default-initialises: resize() of a std::vector<int> with it leaves the new
+// entries unset instead of writing zeros. For arrays every entry of which is written right after
+// the resize (the neighbour lists): at N = 125,000 the zeros were a 31 MB memset, on one thread,
+// per search and per pair selection.
+#include <memory>
+#include <new>
+#include <utility>
+
+namespace sph {
+
+template <class T>
+struct DefaultInitAllocator : std::allocator<T> {
+  template <class U>
+  struct rebind {
+    using other = DefaultInitAllocator<U>;
+  };
+  DefaultInitAllocator() = default;
+  template <class U>
+  DefaultInitAllocator(const DefaultInitAllocator<U>&) noexcept {}
+
+  template <class U>
+  void construct(U* p) noexcept {
+    ::new (static_cast<void*>(p)) U;
+  }
+  template <class U, class... Args>
+  void construct(U* p, Args&&... args) {
+    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+  }
+};
+
+}  // namespace sph
