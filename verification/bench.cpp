@@ -11,8 +11,6 @@
 #include <functional>
 #include <map>
 
-#include <CLI/CLI.hpp>
-
 #include "reference/direct_sum.hpp"
 #include "sph/core/lattice.hpp"
 #include "sph/density/summation.hpp"
@@ -27,13 +25,6 @@
 
 namespace sphv {
 namespace {
-
-struct BenchOptions {
-  std::vector<long> sizes = {10000, 30000, 100000, 300000, 1000000};
-  std::vector<int> threads;
-  long tree_max = 400000, direct_max = 30000;  // the default sizes 3e5 (300763) included for the tree
-  std::filesystem::path out = "runs/bench";
-};
 
 struct Row {
   std::string stage;
@@ -218,21 +209,12 @@ void bench(const BenchOptions& o) {
 
 }  // namespace
 
-void add_bench_command(CLI::App& app) {
-  auto o = std::make_shared<BenchOptions>();
-  auto* cmd = app.add_subcommand("bench", "throughput of search, density, hydro step, tree and direct sum");
-  cmd->add_option("--sizes", o->sizes, "particle numbers (rounded to cubes)")->delimiter(',')->check(CLI::PositiveNumber);
-  cmd->add_option("--threads", o->threads, "thread counts (default: 1 and all cores)")->delimiter(',')->check(CLI::PositiveNumber);
-  cmd->add_option("--tree-max", o->tree_max, "largest N for the tree");
-  cmd->add_option("--direct-max", o->direct_max, "largest N for the O(N^2) direct sum");
-  cmd->add_option("--out", o->out, "output directory (bench.json)");
-  cmd->callback([o] {
-    if (o->threads.empty()) {
-      o->threads = {1};
-      if (omp_get_num_procs() > 1) o->threads.push_back(omp_get_num_procs());
-    }
-    bench(*o);
-  });
+void bench_command(BenchOptions o) {
+  if (o.threads.empty()) {
+    o.threads = {1};
+    if (omp_get_num_procs() > 1) o.threads.push_back(omp_get_num_procs());
+  }
+  bench(o);
 }
 
 }  // namespace sphv

@@ -1,11 +1,18 @@
 #pragma once
-#include "verification/cli_app.hpp"
+#include <filesystem>
+#include <vector>
 
 namespace sphv {
 
 // `sphv bench`: throughput of the neighbour search, the density and hydro force loops, a full
 // hydro step, the tree and the direct sum, for 3D uniform gas at several N and thread counts.
 // Benchmarks, not tests: nothing fails on a time.
-void add_bench_command(CLI::App& app);
+struct BenchOptions {
+  std::vector<long> sizes = {10000, 30000, 100000, 300000, 1000000};
+  std::vector<int> threads;  // empty: 1 and all cores
+  long tree_max = 400000, direct_max = 30000;  // the default sizes 3e5 (300763) included for the tree
+  std::filesystem::path out = "runs/bench";
+};
+void bench_command(BenchOptions o);
 
 }  // namespace sphv

@@ -1,14 +1,10 @@
 #include "verification/gravity_command.hpp"
 
-#include <omp.h>
-
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <string>
 #include <vector>
-
-#include <CLI/CLI.hpp>
 
 #include "verification/cases/gravity_compare.hpp"
 #include "verification/cases/gravity_models.hpp"
@@ -18,15 +14,8 @@
 #include "verification/snapshot/snapshot.hpp"
 
 namespace sphv {
-namespace {
 
-struct Options {
-  std::string input, out, multipole = "quad", opening = "robust";
-  double theta = 0.5, eps = 0.0;
-  bool no_direct = false;
-};
-
-void run(const Options& o) {
+void gravity_command(const GravityCommandOptions& o) {
   if (!(o.theta > 0.0)) throw InputError("--theta must be > 0, got " + std::to_string(o.theta));
   if (!(o.eps >= 0.0)) throw InputError("--softening must be >= 0, got " + std::to_string(o.eps));
   const Snapshot snap = read_snapshot(o.input);
@@ -78,31 +67,6 @@ void run(const Options& o) {
               wd != 0.0 ? std::abs(wt - wd) / std::abs(wd) : 0.0);
   std::printf("cost: tree %.3f s (%.0f interactions per particle), direct %.3f s; written %s\n", t_tree,
               inter / s.x.size(), t_direct, o.out.c_str());
-}
-
-}  // namespace
-
-void add_gravity_command(CLI::App& app) {
-  auto o = std::make_shared<Options>();
-  auto* g = app.add_subcommand("gravity", "tree and direct-sum gravity of your particles (x,y,z,m; G = 1)");
-  g->add_option("--input", o->input,
-                "particles: CSV (header row; comma or blank separated; x,y,z,m or mass, pos_x, ...), or a SWIFT/GADGET "
-                "or H5Part HDF5 snapshot")->required();
-  g->add_option("--out", o->out, "output CSV (x,y,z,m, tree and direct accelerations and potentials)")->required();
-  g->add_option("--theta", o->theta, "opening angle theta > 0 (default 0.5)");
-  g->add_option("--multipole", o->multipole, "mono|quad (default quad)")->check(CLI::IsMember({"mono", "quad"}));
-  g->add_option("--opening", o->opening, "robust|plain (default robust)")->check(CLI::IsMember({"robust", "plain"}));
-  g->add_option("--softening", o->eps, "Plummer softening length eps >= 0 (default 0: coincident particles are refused)");
-  g->add_flag("--no-direct", o->no_direct, "skip the O(N^2) direct sum (large N): tree field only, no error percentiles");
-  g->callback([o, &app] {
-    if (const auto* t = app.get_option_no_throw("--threads"); t && t->count() > 0) omp_set_num_threads(t->as<int>());
-    // Runs inside app.parse(): errors leave as a CLI error, which main prints as one line.
-    try {
-      run(*o);
-    } catch (const std::exception& e) {
-      throw CLI::RuntimeError(e.what(), 2);
-    }
-  });
 }
 
 }  // namespace sphv

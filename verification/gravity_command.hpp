@@ -1,11 +1,16 @@
 #pragma once
-#include "verification/cli_app.hpp"
+#include <string>
 
 namespace sphv {
 
 // `sphv gravity --input FILE [--theta T] [--multipole mono|quad] [--softening EPS] [--no-direct] --out FILE.csv`:
 // tree and direct-sum gravity (G = 1, Plummer softening) of the user's particles (any snapshot
 // read_snapshot reads: positions and masses); writes both fields and prints the error percentiles.
-void add_gravity_command(CLI::App& app);
+struct GravityCommandOptions {
+  std::string input, out, multipole = "quad", opening = "robust";
+  double theta = 0.5, eps = 0.0;
+  bool no_direct = false;
+};
+void gravity_command(const GravityCommandOptions& o);
 
 }  // namespace sphv

@@ -4,8 +4,6 @@
 #include <map>
 #include <optional>
 
-#include <CLI/CLI.hpp>
-
 #include "verification/cases/evrard_setup.hpp"
 #include "verification/cases/heat_errors.hpp"
 #include "verification/cases/heat_lattice.hpp"
@@ -109,29 +107,13 @@ void write_ic(const Case& c, const Params& p, const std::filesystem::path& path,
   write_snapshot(s, path, format);
 }
 
-namespace {
-struct Options {
-  std::string case_name, format = "csv";
-  std::filesystem::path out;
-  std::vector<std::string> settings;
-};
-}  // namespace
-
-void add_ic_command(CLI::App& app) {
-  auto o = std::make_shared<Options>();
-  auto* cmd = app.add_subcommand("ic", "write a case's initial conditions (for another code to start from)");
-  cmd->add_option("case", o->case_name, "case name (sod, sod2d, sod3d, sedov, noh, evrard, heat)")->required();
-  cmd->add_option("--set", o->settings, "case parameter as key=value (repeatable; n is the level)")->take_all();
-  cmd->add_option("--out", o->out, "output file")->required();
-  cmd->add_option("--format", o->format, "csv|swift|h5part (default csv)")->check(CLI::IsMember({"csv", "swift", "h5part"}));
-  cmd->callback([o] {
-    const Case& c = find_case(o->case_name);
-    find_ic(c.name);
-    const Params p = c.parse(o->settings);
-    write_ic(c, p, o->out, o->format);
-    std::printf("%s n=%ld: initial conditions written to %s (%s)\n", c.name.c_str(), p.integer("n"), o->out.c_str(),
-                o->format.c_str());
-  });
+void ic_command(const IcOptions& o) {
+  const Case& c = find_case(o.case_name);
+  find_ic(c.name);
+  const Params p = c.parse(o.settings);
+  write_ic(c, p, o.out, o.format);
+  std::printf("%s n=%ld: initial conditions written to %s (%s)\n", c.name.c_str(), p.integer("n"), o.out.c_str(),
+              o.format.c_str());
 }
 
 }  // namespace sphv

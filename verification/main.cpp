@@ -8,6 +8,7 @@
 #include <optional>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <new>
 #include <stdexcept>
 #include <iostream>
@@ -214,6 +215,75 @@ void error_line(const std::string& what) {
     }
   }
   std::fprintf(stderr, "sphv: error: %s\n", line.c_str());
+}
+
+// The subcommands whose work lives in their own files (CLI11 is compiled here only: it costs
+// about 6 s of compile time in every file that includes it).
+void add_gravity_command(CLI::App& app) {
+  auto o = std::make_shared<GravityCommandOptions>();
+  auto* g = app.add_subcommand("gravity", "tree and direct-sum gravity of your particles (x,y,z,m; G = 1)");
+  g->add_option("--input", o->input,
+                "particles: CSV (header row; comma or blank separated; x,y,z,m or mass, pos_x, ...), or a SWIFT/GADGET "
+                "or H5Part HDF5 snapshot")->required();
+  g->add_option("--out", o->out, "output CSV (x,y,z,m, tree and direct accelerations and potentials)")->required();
+  g->add_option("--theta", o->theta, "opening angle theta > 0 (default 0.5)");
+  g->add_option("--multipole", o->multipole, "mono|quad (default quad)")->check(CLI::IsMember({"mono", "quad"}));
+  g->add_option("--opening", o->opening, "robust|plain (default robust)")->check(CLI::IsMember({"robust", "plain"}));
+  g->add_option("--softening", o->eps, "Plummer softening length eps >= 0 (default 0: coincident particles are refused)");
+  g->add_flag("--no-direct", o->no_direct, "skip the O(N^2) direct sum (large N): tree field only, no error percentiles");
+  g->callback([o, &app] {
+    if (const auto* t = app.get_option_no_throw("--threads"); t && t->count() > 0) omp_set_num_threads(t->as<int>());
+    // Runs inside app.parse(): errors leave as a CLI error, which main prints as one line.
+    try {
+      gravity_command(*o);
+    } catch (const std::exception& e) {
+      throw CLI::RuntimeError(e.what(), 2);
+    }
+  });
+}
+
+void add_score_command(CLI::App& app) {
+  auto o = std::make_shared<ScoreOptions>();
+  auto* cmd = app.add_subcommand("score", "score a snapshot of any SPH code against a case's exact reference");
+  cmd->add_option("case", o->case_name, "case name (sod, sod2d, sod3d, sedov, noh, evrard, heat, gravity)")->required();
+  cmd->add_option("--snapshot", o->snapshot, "particle snapshot: CSV, SWIFT/GADGET HDF5 or H5Part")->required();
+  cmd->add_option("--format", o->format, "auto|csv|swift|h5part (default auto)")
+      ->check(CLI::IsMember({"auto", "csv", "swift", "h5part"}));
+  cmd->add_option("--step", o->step, "H5Part step k of /Step#k (default: the last)")->check(CLI::NonNegativeNumber);
+  cmd->add_option("--set", o->settings, "case parameter as key=value (repeatable; see 'sphv info CASE')")->take_all();
+  cmd->add_option("--out", o->out, "output directory (default runs/CASE-score)");
+  cmd->callback([o] { score_command(*o); });
+}
+
+void add_ic_command(CLI::App& app) {
+  auto o = std::make_shared<IcOptions>();
+  auto* cmd = app.add_subcommand("ic", "write a case's initial conditions (for another code to start from)");
+  cmd->add_option("case", o->case_name, "case name (sod, sod2d, sod3d, sedov, noh, evrard, heat)")->required();
+  cmd->add_option("--set", o->settings, "case parameter as key=value (repeatable; n is the level)")->take_all();
+  cmd->add_option("--out", o->out, "output file")->required();
+  cmd->add_option("--format", o->format, "csv|swift|h5part (default csv)")->check(CLI::IsMember({"csv", "swift", "h5part"}));
+  cmd->callback([o] { ic_command(*o); });
+}
+
+void add_convert_command(CLI::App& app) {
+  auto o = std::make_shared<ConvertOptions>();
+  auto* cmd = app.add_subcommand("convert", "rewrite a particle snapshot in another format (csv, swift, h5part)");
+  cmd->add_option("--input", o->input, "snapshot (any format sphv reads)")->required();
+  cmd->add_option("--out", o->out, "output file")->required();
+  cmd->add_option("--format", o->format, "csv|swift|h5part")->required()->check(CLI::IsMember({"csv", "swift", "h5part"}));
+  cmd->add_option("--time", o->time, "the snapshot's time (overrides the input's)");
+  cmd->callback([o] { convert_command(*o); });
+}
+
+void add_bench_command(CLI::App& app) {
+  auto o = std::make_shared<BenchOptions>();
+  auto* cmd = app.add_subcommand("bench", "throughput of search, density, hydro step, tree and direct sum");
+  cmd->add_option("--sizes", o->sizes, "particle numbers (rounded to cubes)")->delimiter(',')->check(CLI::PositiveNumber);
+  cmd->add_option("--threads", o->threads, "thread counts (default: 1 and all cores)")->delimiter(',')->check(CLI::PositiveNumber);
+  cmd->add_option("--tree-max", o->tree_max, "largest N for the tree");
+  cmd->add_option("--direct-max", o->direct_max, "largest N for the O(N^2) direct sum");
+  cmd->add_option("--out", o->out, "output directory (bench.json)");
+  cmd->callback([o] { bench_command(*o); });
 }
 
 }  // namespace

@@ -5,8 +5,6 @@
 #include <cstdio>
 #include <sstream>
 
-#include <CLI/CLI.hpp>
-
 namespace sphv {
 
 const Scorer& find_scorer(const std::string& case_name) {
@@ -107,42 +105,22 @@ void write_score(const Result& r, const Snapshot& s, const std::filesystem::path
   write_atomically(dir / "result.json", j.dump(1) + "\n");
 }
 
-namespace {
-struct Options {
-  std::string case_name, format = "auto";
-  std::filesystem::path snapshot, out;
-  std::vector<std::string> settings;
-  long step = -1;
-};
-}  // namespace
-
-void add_score_command(CLI::App& app) {
-  auto o = std::make_shared<Options>();
-  auto* cmd = app.add_subcommand("score", "score a snapshot of any SPH code against a case's exact reference");
-  cmd->add_option("case", o->case_name, "case name (sod, sod2d, sod3d, sedov, noh, evrard, heat, gravity)")->required();
-  cmd->add_option("--snapshot", o->snapshot, "particle snapshot: CSV, SWIFT/GADGET HDF5 or H5Part")->required();
-  cmd->add_option("--format", o->format, "auto|csv|swift|h5part (default auto)")
-      ->check(CLI::IsMember({"auto", "csv", "swift", "h5part"}));
-  cmd->add_option("--step", o->step, "H5Part step k of /Step#k (default: the last)")->check(CLI::NonNegativeNumber);
-  cmd->add_option("--set", o->settings, "case parameter as key=value (repeatable; see 'sphv info CASE')")->take_all();
-  cmd->add_option("--out", o->out, "output directory (default runs/CASE-score)");
-  cmd->callback([o] {
-    const Case& c = find_case(o->case_name);
-    find_scorer(c.name);
-    const Snapshot s = read_snapshot(o->snapshot, o->format, o->step >= 0 ? std::optional<long>(o->step) : std::nullopt);
-    const Result r = score_snapshot(c, o->settings, s);
-    const auto dir = o->out.empty() ? std::filesystem::path("runs") / (c.name + "-score") : o->out;
-    write_score(r, s, dir);
-    std::printf("%s: %zu particles (%s, %dD, t = %s): %s\n", o->snapshot.c_str(), s.size(), s.format.c_str(), s.dim,
-                s.time ? number(*s.time).c_str() : "-", s.describe().c_str());
-    std::string line = c.name;
-    for (const auto& [k, v] : r.errors) {
-      char buf[96];
-      std::snprintf(buf, sizeof buf, ", %s=%.6e", k.c_str(), v);
-      line += buf;
-    }
-    std::printf("%s, verdict: %s; written %s\n", line.c_str(), r.verdict.c_str(), (dir / "result.json").c_str());
-  });
+void score_command(const ScoreOptions& o) {
+  const Case& c = find_case(o.case_name);
+  find_scorer(c.name);
+  const Snapshot s = read_snapshot(o.snapshot, o.format, o.step >= 0 ? std::optional<long>(o.step) : std::nullopt);
+  const Result r = score_snapshot(c, o.settings, s);
+  const auto dir = o.out.empty() ? std::filesystem::path("runs") / (c.name + "-score") : o.out;
+  write_score(r, s, dir);
+  std::printf("%s: %zu particles (%s, %dD, t = %s): %s\n", o.snapshot.c_str(), s.size(), s.format.c_str(), s.dim,
+              s.time ? number(*s.time).c_str() : "-", s.describe().c_str());
+  std::string line = c.name;
+  for (const auto& [k, v] : r.errors) {
+    char buf[96];
+    std::snprintf(buf, sizeof buf, ", %s=%.6e", k.c_str(), v);
+    line += buf;
+  }
+  std::printf("%s, verdict: %s; written %s\n", line.c_str(), r.verdict.c_str(), (dir / "result.json").c_str());
 }
 
 }  // namespace sphv

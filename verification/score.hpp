@@ -1,7 +1,7 @@
 #pragma once
 // `sphv score CASE --snapshot FILE`: a snapshot written by any SPH code scored against the case's
 // exact reference, with the same error names and definitions as the case's own runs.
-#include "verification/cli_app.hpp"
+#include <filesystem>
 #include <functional>
 #include <map>
 #include <string>
@@ -34,6 +34,12 @@ Result score_snapshot(const Case& c, std::vector<std::string> settings, const Sn
 // result.json of a scored snapshot: the run's keys, provenance.snapshot = path, size, SHA-256.
 void write_score(const Result& r, const Snapshot& s, const std::filesystem::path& dir);
 
-void add_score_command(CLI::App& app);
+struct ScoreOptions {
+  std::string case_name, format = "auto";
+  std::filesystem::path snapshot, out;
+  std::vector<std::string> settings;
+  long step = -1;  // H5Part step (-1: the last)
+};
+void score_command(const ScoreOptions& o);
 
 }  // namespace sphv
