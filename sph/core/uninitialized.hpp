@@ -1,8 +1,8 @@
 #pragma once
-// An allocator that default-initialises: resize() of a std::vector<int> with it leaves the new
-// entries unset instead of writing zeros. For arrays every entry of which is written right after
-// the resize (the neighbour lists): at N = 125,000 the zeros were a 31 MB memset, on one thread,
-// per search and per pair selection.
+// An allocator that default-initialises: resize() of a vector of ints or doubles with it leaves
+// the new entries unset instead of writing zeros. For arrays every entry of which is written
+// right after the resize (neighbour lists, position columns): at N = 125,000 the zeros of the
+// lists were a 31 MB memset, on one thread, per search and per pair selection.
 #include <memory>
 #include <new>
 #include <utility>
