@@ -92,10 +92,10 @@ inline HydroTimes time_hydro_step(sph::Particles<3>& p, const sph::Box<3>& box,
   for (int k = 0; k < 3; ++k) {
     const Run one = evolve_for(1), nine = evolve_for(9);
     t.step = std::min(t.step, (nine.seconds - one.seconds) / 8.0);
-    t.searches_per_step = static_cast<double>(nine.searches - one.searches) / 8.0;
+    t.searches_per_step = static_cast<double>(nine.searches - one.searches) / 8.0;  // the same in every pair
   }
   // Particle state (x, v: 6 doubles; m, rho, p, c, u, h: 6), derivatives (dv/dt: 3; du/dt,
-  // drho/dt, dh/dt, mu_max: 4) and the KDK step's copy of them, neighbour list (one int per pair,
+  // drho/dt, dh/dt, mu_max: 4) and the KDK step's scratch of them, neighbour list (one int per pair,
   // an offset and a place in the visiting order per particle).
   t.bytes_per_particle = (12 + 7 + 7) * 8.0 + 12.0 + 4.0 * t.pairs / p.size();
   return t;

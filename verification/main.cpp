@@ -217,6 +217,15 @@ void error_line(const std::string& what) {
   std::fprintf(stderr, "sphv: error: %s\n", line.c_str());
 }
 
+// A CLI11 check with a message that says what is wanted: CLI11's own range checks print their
+// limits in full ("Value 0 not in range 0.000000 to 179769313486231570814527...").
+CLI::Validator wanted(const CLI::Validator& check, const std::string& what, const std::string& name) {
+  return CLI::Validator([check, what](std::string& v) { return check(v).empty() ? std::string() : "'" + v + "' is not " + what; },
+                        name);
+}
+const CLI::Validator positive = wanted(CLI::PositiveNumber, "a whole number >= 1", "N>=1");
+const CLI::Validator non_negative = wanted(CLI::NonNegativeNumber, "a whole number >= 0", "N>=0");
+
 // The subcommands whose work lives in their own files (CLI11 is compiled here only: it costs
 // about 6 s of compile time in every file that includes it).
 void add_gravity_command(CLI::App& app) {
@@ -231,8 +240,7 @@ void add_gravity_command(CLI::App& app) {
   g->add_option("--opening", o->opening, "robust|plain (default robust)")->check(CLI::IsMember({"robust", "plain"}));
   g->add_option("--softening", o->eps, "Plummer softening length eps >= 0 (default 0: coincident particles are refused)");
   g->add_flag("--no-direct", o->no_direct, "skip the O(N^2) direct sum (large N): tree field only, no error percentiles");
-  g->callback([o, &app] {
-    if (const auto* t = app.get_option_no_throw("--threads"); t && t->count() > 0) omp_set_num_threads(t->as<int>());
+  g->callback([o] {
     // Runs inside app.parse(): errors leave as a CLI error, which main prints as one line.
     try {
       gravity_command(*o);
@@ -249,7 +257,7 @@ void add_score_command(CLI::App& app) {
   cmd->add_option("--snapshot", o->snapshot, "particle snapshot: CSV, SWIFT/GADGET HDF5 or H5Part")->required();
   cmd->add_option("--format", o->format, "auto|csv|swift|h5part (default auto)")
       ->check(CLI::IsMember({"auto", "csv", "swift", "h5part"}));
-  cmd->add_option("--step", o->step, "H5Part step k of /Step#k (default: the last)")->check(CLI::NonNegativeNumber);
+  cmd->add_option("--step", o->step, "H5Part step k of /Step#k (default: the last)")->check(non_negative);
   cmd->add_option("--set", o->settings, "case parameter as key=value (repeatable; see 'sphv info CASE')")->take_all();
   cmd->add_option("--out", o->out, "output directory (default runs/CASE-score)");
   cmd->callback([o] { score_command(*o); });
@@ -278,8 +286,8 @@ void add_convert_command(CLI::App& app) {
 void add_bench_command(CLI::App& app) {
   auto o = std::make_shared<BenchOptions>();
   auto* cmd = app.add_subcommand("bench", "throughput of search, density, hydro step, tree and direct sum");
-  cmd->add_option("--sizes", o->sizes, "particle numbers (rounded to cubes)")->delimiter(',')->check(CLI::PositiveNumber);
-  cmd->add_option("--threads", o->threads, "thread counts (default: 1 and all cores)")->delimiter(',')->check(CLI::PositiveNumber);
+  cmd->add_option("--sizes", o->sizes, "particle numbers (rounded to cubes)")->delimiter(',')->check(positive);
+  cmd->add_option("--threads", o->threads, "thread counts (default: 1 and all cores)")->delimiter(',')->check(positive);
   cmd->add_option("--tree-max", o->tree_max, "largest N for the tree");
   cmd->add_option("--direct-max", o->direct_max, "largest N for the O(N^2) direct sum");
   cmd->add_option("--out", o->out, "output directory (bench.json)");
@@ -291,8 +299,10 @@ void add_bench_command(CLI::App& app) {
 int run_main(int argc, char** argv) {
   CLI::App app{"sphv: verification and convergence harness for a reference SPH implementation", "sphv"};
   app.require_subcommand(1);
-  int threads = 0;
-  app.add_option("--threads", threads, "OpenMP threads (default: all cores)")->check(CLI::PositiveNumber);
+  // Set as soon as it is parsed: before the commands that run inside the parse (gravity, bench,
+  // score, ic, convert) and the ones after it.
+  app.add_option_function<int>("--threads", [](int t) { omp_set_num_threads(t); }, "OpenMP threads (default: all cores)")
+      ->check(positive);
   fs::path baselines;
   app.add_option("--baselines", baselines, "drift baselines folder (default: <sphv's folder>/../reference/baselines)");
   app.footer("Exit status: 0 every gate passed and every run ended as its case expects; 1 a gate failed or a run "
@@ -323,11 +333,9 @@ int run_main(int argc, char** argv) {
   sweep->add_option("--vary", vary, "variants as key=a,b,c (repeatable: the product); DIR/<variant>/sweep.json")->take_all();
   sweep->add_option("--out", out, "output directory (default runs/CASE-sweep)");
   opt.jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  sweep->add_option("--jobs", opt.jobs, "points run at once as subprocesses (default: cores)")->check(CLI::PositiveNumber);
+  sweep->add_option("--jobs", opt.jobs, "points run at once as subprocesses (default: cores)")->check(positive);
   sweep->add_flag("--force", opt.force, "rerun points that already have a result of this code version");
-  const CLI::Validator seconds([](std::string& v) {
-    return CLI::NonNegativeNumber(v).empty() ? std::string() : "'" + v + "' is not a number of seconds >= 0";
-  }, "SECONDS");
+  const CLI::Validator seconds = wanted(CLI::NonNegativeNumber, "a number of seconds >= 0", "SECONDS");
   std::optional<double> timeout;
   sweep->add_option("--timeout", timeout, "seconds a point may run before it is killed (0: no limit; default: the "
                     "tier's, quick 120, standard 600, full none; none with --levels)")->check(seconds);
@@ -368,7 +376,6 @@ int run_main(int argc, char** argv) {
       throw InputError(e.what());
     }
     app.parse(argc, argv);
-    if (threads > 0) omp_set_num_threads(threads);
     if (!baselines.empty()) set_baseline_dir(baselines);
     const Tier tier = parse_tier(tier_name);
     opt.exe = fs::canonical("/proc/self/exe");

@@ -27,7 +27,7 @@ template <int D>
 void copy_components(const std::vector<Vec<D>>& x, Components<D>& xs) {
   const std::size_t n = x.size();
   for (int d = 0; d < D; ++d)
-    if (xs[d].size() != n) xs[d] = typename Components<D>::value_type(n);  // (resize: a GCC 12 false -Wstringop-overflow)
+    xs[d].resize(n);  // default-initialised: no zeros before the copy below
 #pragma omp parallel for if (n >= parallel_threshold)
   for (std::size_t i = 0; i < n; ++i)
     for (int d = 0; d < D; ++d) xs[d][i] = x[i][d];
