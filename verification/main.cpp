@@ -306,8 +306,9 @@ int run_main(int argc, char** argv) {
   fs::path baselines;
   app.add_option("--baselines", baselines, "drift baselines folder (default: <sphv's folder>/../reference/baselines)");
   app.footer("Exit status: 0 every gate passed and every run ended as its case expects; 1 a gate failed or a run "
-             "went unstable where it should not; 2 bad input; 3 I/O error.\nEnvironment: SPHV_ISA=portable|avx2 "
-             "chooses the pair loops' instruction-set path (default: the fastest this CPU supports).");
+             "went unstable where it should not; 2 bad input; 3 I/O error.\nEnvironment: SPHV_ISA=portable|avx2|avx512 "
+             "chooses the instruction-set path of the pair loops and the tree walk (default: the fastest this CPU "
+             "supports).");
 
   auto* list = app.add_subcommand("list", "every case, what its n counts, and its tags");
   auto* info_cmd = app.add_subcommand("info", "a case's parameters with defaults, levels and expected orders");

@@ -7,22 +7,35 @@ namespace sph {
 
 // Instruction-set path of the pair loops (hydro/pairs.hpp) and the tree gravity walk
 // (gravity/tree_gravity.cpp). The loops of 2D and 3D scenes and the walk are compiled twice, for
-// the portable default and for x86-64 with AVX2 and FMA, and the path is chosen once at run time:
-// the fastest the CPU supports, or the one the environment variable SPHV_ISA names ("portable"
-// or "avx2"). FMA contraction rounds differently, so results are reproducible for
-// a given path (and thread count independent on each), and a run's provenance records the path.
-enum class IsaPath { portable, avx2 };
+// the portable default and for x86-64 with AVX2 and FMA; the walk also a third time, for
+// AVX-512 (path avx512: the pair loops as avx2, the walk in 512-bit vectors). The path is chosen
+// once at run time: the fastest the CPU supports, or the one the environment variable SPHV_ISA
+// names ("portable", "avx2" or "avx512"). FMA contraction rounds differently, so the pair loops'
+// results are reproducible for a given path (and thread count independent on each), and a run's
+// provenance records the path. The walk is compiled without contraction (CMakeLists.txt), so its
+// field is the same on every path bit for bit (verification/tests/gravity.cpp), and avx512 runs
+// round as avx2 runs.
+enum class IsaPath { portable, avx2, avx512 };
 
 // Defined where the compiler can build the second copy (x86-64, GCC's target attribute).
 #if defined(__x86_64__) && defined(__GNUC__)
 #define SPH_AVX2_COPY 1
 #endif
 
-inline const char* isa_name(IsaPath p) { return p == IsaPath::avx2 ? "avx2" : "portable"; }
+inline const char* isa_name(IsaPath p) {
+  return p == IsaPath::avx512 ? "avx512" : p == IsaPath::avx2 ? "avx2" : "portable";
+}
+
+// The pair loops' copy: AVX2 and FMA on the avx2 and avx512 paths.
+inline bool avx2_loops(IsaPath p) { return p != IsaPath::portable; }
 
 inline bool isa_supported(IsaPath p) {
 #ifdef SPH_AVX2_COPY
-  if (p == IsaPath::avx2) return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+  const bool avx2 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+  if (p == IsaPath::avx2) return avx2;
+  if (p == IsaPath::avx512)
+    return avx2 && __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") &&
+           __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512bw");
 #endif
   return p == IsaPath::portable;
 }
@@ -31,14 +44,17 @@ inline bool isa_supported(IsaPath p) {
 // that is not a path, or a path this CPU lacks.
 inline IsaPath isa_from_environment() {
   const char* v = std::getenv("SPHV_ISA");
-  if (!v || !*v) return isa_supported(IsaPath::avx2) ? IsaPath::avx2 : IsaPath::portable;
+  if (!v || !*v)
+    return isa_supported(IsaPath::avx512) ? IsaPath::avx512
+           : isa_supported(IsaPath::avx2) ? IsaPath::avx2
+                                          : IsaPath::portable;
   const std::string s = v;
-  for (IsaPath p : {IsaPath::portable, IsaPath::avx2})
+  for (IsaPath p : {IsaPath::portable, IsaPath::avx2, IsaPath::avx512})
     if (s == isa_name(p)) {
       if (!isa_supported(p)) throw std::invalid_argument("SPHV_ISA=" + s + ": this CPU does not support it");
       return p;
     }
-  throw std::invalid_argument("SPHV_ISA=" + s + ": not an instruction-set path (portable or avx2)");
+  throw std::invalid_argument("SPHV_ISA=" + s + ": not an instruction-set path (portable, avx2 or avx512)");
 }
 
 // The path every pair loop of this process takes: chosen at the first call, changed only by

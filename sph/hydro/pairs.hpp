@@ -154,7 +154,7 @@ template <class Visit>
 template <int D, class Visit>
 void for_each_particle(std::size_t n, const NeighbourList& nl, Visit&& visit) {
   constexpr std::size_t chunk = 256;
-  [[maybe_unused]] const bool avx2 = D >= 2 && isa_path() == IsaPath::avx2;
+  [[maybe_unused]] const bool avx2 = D >= 2 && avx2_loops(isa_path());
 #pragma omp parallel for schedule(dynamic) if (n >= parallel_threshold)
   for (std::size_t k0 = 0; k0 < n; k0 += chunk) {
     const std::size_t k1 = std::min(n, k0 + chunk);
@@ -175,7 +175,7 @@ void sum_over_pairs(const std::vector<Vec<D>>& x, const std::vector<double>& h, 
                     const Box<D>& box, F&& f, Store&& store) {
   const Vec<D> L = box.length(), wrap = box.wrap_factor();
   const Components<D> xs = components<D>(x);
-  const bool avx2 = isa_path() == IsaPath::avx2;
+  const bool avx2 = avx2_loops(isa_path());
   for_each_particle<D>(x.size(), nl,
                        [&](std::size_t i) { pairs_of<D, K, Acc>(i, avx2, xs, h, nl, L, wrap, f, store); });
 }

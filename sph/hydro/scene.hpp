@@ -95,7 +95,7 @@ struct Scene {
     if constexpr ((has_pair<Terms> || ...)) {
       const Components<D> xs = components<D>(p.x), vs = components<D>(p.v);
       const Vec<D> L = nb.box.length(), wrap = nb.box.wrap_factor();
-      const bool avx2 = isa_path() == IsaPath::avx2;
+      const bool avx2 = avx2_loops(isa_path());
       for_each_particle<D>(p.size(), nb.list,
                            [&](std::size_t i) { sums_of(i, avx2, p, xs, vs, nb.list, L, wrap, d); });
     }

@@ -154,7 +154,7 @@ class VerletList {
       if (js.size() < bound) js.resize(bound);
       std::size_t used;
 #ifdef SPH_AVX2_COPY
-      if (D >= 2 && isa_path() == IsaPath::avx2)
+      if (D >= 2 && avx2_loops(isa_path()))
         used = select_pairs_avx2<D>(first, last, list_, xs_, h, L, wrap, js.data(), active_.offset);
       else
 #endif
