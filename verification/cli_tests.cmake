@@ -80,5 +80,16 @@ foreach(_case theta_zero theta_negative empty header_only negative_mass malforme
   sphv_refuses(gravity_${_case} gravity --input ${_in} --out ${_gdir}/out_${_case}.csv ${_extra})
 endforeach()
 sphv_refuses(bench_output_is_a_file bench --sizes 1000 --threads 1 --out ${_gdir}/ok.csv)
+# sphv gravity's exit codes: 2 for bad input, 3 for an output it cannot write; one error line each.
+function(sphv_gravity_exits name code)
+  string(JOIN " " _args ${ARGN})
+  add_test(NAME cli_gravity_exits_${name} COMMAND bash -c
+    "$<TARGET_FILE:sphv> gravity ${_args} 2> ${_gdir}/err_${name}.txt; s=$?; cat ${_gdir}/err_${name}.txt; test $s -eq ${code} && test $(wc -l < ${_gdir}/err_${name}.txt) -eq 1 && echo PASS")
+  set_tests_properties(cli_gravity_exits_${name} PROPERTIES PASS_REGULAR_EXPRESSION "PASS")
+endfunction()
+sphv_gravity_exits(theta_zero 2 --input ${_gdir}/ok.csv --out ${_gdir}/out_exits.csv --theta 0)
+sphv_gravity_exits(missing_file 2 --input ${_gdir}/does_not_exist.csv --out ${_gdir}/out_exits.csv)
+sphv_gravity_exits(negative_mass 2 --input ${_gdir}/negative_mass.csv --out ${_gdir}/out_exits.csv)
+sphv_gravity_exits(unwritable_output 3 --input ${_gdir}/ok.csv --out ${_gdir}/ok.csv/out.csv)
 add_test(NAME cli_gravity_ok COMMAND sphv gravity --input ${_gdir}/ok.csv --out ${_gdir}/out_ok.csv --theta 0.7 --multipole mono --softening 0.1)
 set_tests_properties(cli_gravity_ok PROPERTIES PASS_REGULAR_EXPRESSION "relative force error.*99% ")

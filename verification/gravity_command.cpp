@@ -54,7 +54,8 @@ void gravity_command(const GravityCommandOptions& o) {
   out.add("phi_direct", d.phi);
   for (std::size_t c = 0; c < out.columns.size(); ++c)
     for (double v : out.columns[c])
-      if (!std::isfinite(v)) throw std::runtime_error("non-finite " + out.names[c] + " (not written)");
+      if (!std::isfinite(v))  // the input's numbers overflow the field
+          throw InputError("non-finite " + out.names[c] + " (not written)");
   write_atomically(o.out, csv(out));
 
   // Particles with zero direct force (e.g. a single particle) have no relative error.

@@ -240,14 +240,9 @@ void add_gravity_command(CLI::App& app) {
   g->add_option("--opening", o->opening, "robust|plain (default robust)")->check(CLI::IsMember({"robust", "plain"}));
   g->add_option("--softening", o->eps, "Plummer softening length eps >= 0 (default 0: coincident particles are refused)");
   g->add_flag("--no-direct", o->no_direct, "skip the O(N^2) direct sum (large N): tree field only, no error percentiles");
-  g->callback([o] {
-    // Runs inside app.parse(): errors leave as a CLI error, which main prints as one line.
-    try {
-      gravity_command(*o);
-    } catch (const std::exception& e) {
-      throw CLI::RuntimeError(e.what(), 2);
-    }
-  });
+  // Runs inside app.parse(); its errors reach main's handlers as they are: bad input exits 2, an
+  // output it cannot write 3.
+  g->callback([o] { gravity_command(*o); });
 }
 
 void add_score_command(CLI::App& app) {
