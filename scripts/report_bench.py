@@ -15,8 +15,8 @@ def bench_body(results, out):
     e = html.escape
     body = [f"<h1>sphv benchmarks</h1><p>{e(b['benchmark'])}; {e(str(pr.get('cpu')))}, {pr.get('cores')} cores, build "
             f"{e(str(pr.get('build_type')))} ({e(str(pr.get('cxx_flags')))}), {e(str(pr.get('compiler')))}, commit "
-            f"{e(str(pr.get('git_commit')))}, pair loops on the {e(str(pr.get('isa_path', 'portable')))} instruction-set "
-            f"path. Benchmarks, not tests: nothing fails on a time.</p><div class='figs'>"]
+            f"{e(str(pr.get('git_commit')))}, instruction-set path {e(str(pr.get('isa_path', 'portable')))} (pair loops and tree "
+            f"walk). Benchmarks, not tests: nothing fails on a time.</p><div class='figs'>"]
     for f in b["figures"]:
         stem = figs.run_figure(f, "", out / "fig" / "bench" / f["name"])
         if stem:

@@ -144,8 +144,8 @@ def provenance_text(sweeps, tier):
             + (" (mixed commits)" if len(commits) > 1 else "")
             + (r" \textbf{from a tree with uncommitted changes}" if any(is_dirty(q) for q in provs) else "")
             + f", {tex(p.get('compiler', ''))} ({tex(p.get('build_type', ''))}, flags {tex(str(p.get('cxx_flags', '')).strip())}), "
-            f"on {tex(p.get('cpu', ''))} with {p.get('threads', '?')} OpenMP threads, pair loops on the "
-            f"{tex(str(p.get('isa_path', 'portable')))} instruction-set path, tier {tex(tier)}; "
+            f"on {tex(p.get('cpu', ''))} with {p.get('threads', '?')} OpenMP threads, instruction-set path "
+            f"{tex(str(p.get('isa_path', 'portable')))} (pair loops and tree walk), tier {tex(tier)}; "
             r"\texttt{reproduce.sh} re-runs it. ")
 
 
