@@ -15,4 +15,10 @@ void density_summation(Particles<D>& p, const NeighbourList& nl, const Box<D>& b
       [&](std::size_t i, double rho) { p.rho[i] = p.m[i] * K::W(0.0, p.h[i]) + rho; });
 }
 
+// Compiled once, in sph/density/summation.cpp, instead of in each of the ~11 files whose scenes
+// sum the density: its pair loop in two instruction-set copies.
+extern template void density_summation<1>(Particles<1>&, const NeighbourList&, const Box<1>&);
+extern template void density_summation<2>(Particles<2>&, const NeighbourList&, const Box<2>&);
+extern template void density_summation<3>(Particles<3>&, const NeighbourList&, const Box<3>&);
+
 }  // namespace sph
