@@ -34,13 +34,21 @@ void gravity_command(const GravityCommandOptions& o) {
   std::printf("gravity: N = %zu, theta = %g, %s, %s opening, eps = %g, G = 1\n", s.x.size(), o.theta,
               o.multipole == "mono" ? "monopole" : "quadrupole", o.opening.c_str(), o.eps);
   Table out;
+  // No output file holds a non-finite number.
+  auto write = [&] {
+    for (std::size_t c = 0; c < out.columns.size(); ++c)
+      for (double v : out.columns[c])
+        if (!std::isfinite(v))  // the input's numbers overflow the field
+          throw InputError("non-finite " + out.names[c] + " (not written)");
+    write_atomically(o.out, csv(out));
+  };
   const char* axes[] = {"x", "y", "z"};
   for (int k = 0; k < 3; ++k) out.add(axes[k], [&] { std::vector<double> c; for (const auto& x : s.x) c.push_back(x[k]); return c; }());
   out.add("m", s.m);
   for (int k = 0; k < 3; ++k) out.add(std::string("a") + axes[k] + "_tree", [&] { std::vector<double> c; for (const auto& a : f.a) c.push_back(a[k]); return c; }());
   out.add("phi_tree", f.phi);
   if (o.no_direct) {
-    write_atomically(o.out, csv(out));
+    write();
     std::printf("cost: tree %.3f s (%.0f interactions per particle); direct sum skipped (--no-direct); written %s\n",
                 t_tree, inter / s.x.size(), o.out.c_str());
     return;
@@ -52,11 +60,7 @@ void gravity_command(const GravityCommandOptions& o) {
   out.add("ay_direct", d.ay);
   out.add("az_direct", d.az);
   out.add("phi_direct", d.phi);
-  for (std::size_t c = 0; c < out.columns.size(); ++c)
-    for (double v : out.columns[c])
-      if (!std::isfinite(v))  // the input's numbers overflow the field
-          throw InputError("non-finite " + out.names[c] + " (not written)");
-  write_atomically(o.out, csv(out));
+  write();
 
   // Particles with zero direct force (e.g. a single particle) have no relative error.
   const auto rel = finite_values(gravity::relative_force_error(f, d));

@@ -63,6 +63,11 @@ inline std::vector<Source> sources_of(const Tree<3>& t, const std::vector<Vec<3>
   return s;
 }
 
+// A group of targets, walked together (see Group below): 32, one a bit of Lanes.
+constexpr int group_size = 32;
+using Lanes = unsigned;  // bit l set: target l takes part (at a node), or takes a source
+static_assert(group_size == 32 && sizeof(Lanes) == 4, "a group's targets are the bits of a 32-bit unsigned");
+
 // Potential and acceleration at the targets (lanes) of a group from the sources list[0 .. n),
 // lane l taking source list[k] when bit l of take[k] is set; each lane's terms are added in list
 // order. A node's is its expansion about the centre of mass, y = r - r_CM ((81) with the dipole
@@ -74,20 +79,20 @@ inline std::vector<Source> sources_of(const Tree<3>& t, const std::vector<Vec<3>
 // itself, may see an infinite term). Only 41 % of the lanes take a source on average
 // (N = 125,000, theta 0.5), yet with 8 lanes a vector (the avx512 path) the whole walk took 0.44 s
 // against 0.74 s with per-target lists, whose sources were gathered (avx2: 0.74 s either way).
-template <Multipole M, int lanes>
-inline void sum_sources(const std::vector<Source>& s, const int* list, const unsigned* take, int n,
+template <Multipole M>
+inline void sum_sources(const std::vector<Source>& s, const int* list, const Lanes* take, int n,
                         const double* r0, const double* r1, const double* r2, double G, double eps2, double* ax,
                         double* ay, double* az, double* phi, int* count) {
   const double hG = 0.5 * G;
-  std::fill_n(ax, lanes, 0.0), std::fill_n(ay, lanes, 0.0), std::fill_n(az, lanes, 0.0);
-  std::fill_n(phi, lanes, 0.0), std::fill_n(count, lanes, 0);
+  std::fill_n(ax, group_size, 0.0), std::fill_n(ay, group_size, 0.0), std::fill_n(az, group_size, 0.0);
+  std::fill_n(phi, group_size, 0.0), std::fill_n(count, group_size, 0);
   for (int k = 0; k < n; ++k) {
-    const unsigned bits = take[k];
+    const Lanes bits = take[k];
     const Source& src = s[list[k]];
     const double x = src.x, y = src.y, z = src.z, GM = src.GM;
     const double S00 = src.S00, S01 = src.S01, S02 = src.S02, S11 = src.S11, S12 = src.S12, S22 = src.S22,
                  tr = src.tr;
-    for (int l = 0; l < lanes; ++l) {
+    for (int l = 0; l < group_size; ++l) {
       const double y0 = r0[l] - x, y1 = r1[l] - y, y2 = r2[l] - z;
       const double inv = 1.0 / std::sqrt(y0 * y0 + y1 * y1 + y2 * y2 + eps2), inv2 = inv * inv, inv3 = inv * inv2;
       double f = -(GM * inv), k3 = GM * inv3, g0 = -(k3 * y0), g1 = -(k3 * y1), g2 = -(k3 * y2);
@@ -135,10 +140,6 @@ void cells_of(const Tree<3>& t, double theta, std::vector<Cell>& cells, std::vec
 // shares the traversal: one stack and one fetch of each node for all its targets. Every decision
 // is still made per target, as in that target's own walk (9.4.7): the walk lists, per target and
 // in the order of its own walk, the nodes it accepts and the leaf particles it meets.
-constexpr int group_size = 32;
-using Lanes = unsigned;  // bit l set: target l takes part (at a node), or takes a source
-static_assert(group_size == 32 && sizeof(Lanes) == 4, "a group's targets are the bits of a 32-bit unsigned");
-
 struct Group {
   alignas(64) double x[group_size], y[group_size], z[group_size];  // target positions
   long first = -1;  // the tree position of target 0 when the targets are the particles, else -1
@@ -234,8 +235,8 @@ void walk(const Walk& w, Lanes in, Group& g) {
 template <Multipole M, Opening O>
 void group_field(const Walk& w, Lanes in, Group& g) {
   walk<O>(w, in, g);
-  sum_sources<M, group_size>(w.sources, g.list.data(), g.take.data(), static_cast<int>(g.list.size()), g.x, g.y, g.z,
-                             w.G, w.eps2, g.ax, g.ay, g.az, g.phi, g.length);
+  sum_sources<M>(w.sources, g.list.data(), g.take.data(), static_cast<int>(g.list.size()), g.x, g.y, g.z, w.G,
+                 w.eps2, g.ax, g.ay, g.az, g.phi, g.length);
 }
 using GroupField = void (*)(const Walk&, Lanes, Group&);
 
