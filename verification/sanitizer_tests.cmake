@@ -15,7 +15,7 @@ set(_tests fuzz fuzz_snapshots reliability)
 list(TRANSFORM _tests PREPEND ${CMAKE_SOURCE_DIR}/verification/tests/)
 list(TRANSFORM _tests APPEND .cpp)
 add_executable(sphv_sanitized_tests ${_tests} verification/tests/sanitizer/options.cpp
-               $<TARGET_OBJECTS:harness_io> $<TARGET_OBJECTS:harness_physics>)
+               $<TARGET_OBJECTS:harness_io> $<TARGET_OBJECTS:harness_physics> $<TARGET_OBJECTS:build_state>)
 target_link_libraries(sphv_sanitized_tests PRIVATE harness_input_sanitized catch_main)
 target_compile_definitions(sphv_sanitized_tests PRIVATE SPHV_SOURCE_DIR="${CMAKE_SOURCE_DIR}" SPHV_EXE="$<TARGET_FILE:sphv>" SPHV_SANITIZED)
 foreach(_target harness_input_sanitized sphv_sanitized_tests)

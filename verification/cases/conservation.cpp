@@ -13,7 +13,7 @@
 #include "verification/cases/conservation_catalogue.hpp"
 #include "verification/sweep.hpp"
 
-namespace sphv {
+namespace sphv::conservation_case {
 namespace {
 
 using conservation::Catalogue;
@@ -178,4 +178,4 @@ const Registration reg{Case{
 }};
 
 }  // namespace
-}  // namespace sphv
+}  // namespace sphv::conservation_case

@@ -1,4 +1,4 @@
-// The conservation catalogue instantiated in 3D (compiled apart from the other dimension).
+// The conservation catalogue instantiated in 3D (a file per dimension; one unit in a unity build).
 #include "verification/cases/conservation_catalogue.hpp"
 
 namespace sphv::conservation {

@@ -10,7 +10,7 @@
 #include "verification/cases/conservation_catalogue.hpp"
 #include "verification/sweep.hpp"
 
-namespace sphv {
+namespace sphv::conservation_dt_case {
 namespace {
 
 conservation::EulerChoice euler_of(const Params& p) { return {p.text("euler"), p.real("lambda")}; }
@@ -97,4 +97,4 @@ const Registration reg{Case{
 }};
 
 }  // namespace
-}  // namespace sphv
+}  // namespace sphv::conservation_dt_case

@@ -25,7 +25,7 @@
 #include "verification/cases/measured_bound.hpp"
 #include "verification/sweep.hpp"
 
-namespace sphv {
+namespace sphv::conservation_gradh_case {
 namespace {
 
 constexpr int D = 2;
@@ -163,4 +163,4 @@ const Registration reg{Case{
 }};
 
 }  // namespace
-}  // namespace sphv
+}  // namespace sphv::conservation_gradh_case

@@ -18,7 +18,7 @@
 #include "verification/cases/extreme_hydro.hpp"
 #include "verification/sweep.hpp"
 
-namespace sphv {
+namespace sphv::evrard_case {
 namespace {
 
 // Energy curves of the SPH run, one entry per recorded state.
@@ -256,4 +256,4 @@ const Registration reg{Case{
 }};
 
 }  // namespace
-}  // namespace sphv
+}  // namespace sphv::evrard_case

@@ -11,7 +11,7 @@
 #include "verification/cases/extreme_hydro.hpp"
 #include "verification/sweep.hpp"
 
-namespace sphv {
+namespace sphv::extreme_degenerate_case {
 namespace {
 
 double max_speed(const auto& p) {
@@ -163,4 +163,4 @@ const Registration reg{Case{
 }};
 
 }  // namespace
-}  // namespace sphv
+}  // namespace sphv::extreme_degenerate_case

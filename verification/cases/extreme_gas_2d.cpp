@@ -1,4 +1,4 @@
-// Gas evolved in 2D (extreme_hydro.hpp), instantiated in its own translation unit (parallel builds).
+// Gas evolved in 2D (extreme_hydro.hpp) instantiated (a file per dimension; one unit in a unity build).
 #include "verification/cases/extreme_hydro.hpp"
 
 namespace sphv::extreme {

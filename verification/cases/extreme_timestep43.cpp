@@ -10,7 +10,7 @@
 #include "verification/cases/extreme_hydro.hpp"
 #include "verification/sweep.hpp"
 
-namespace sphv {
+namespace sphv::extreme_timestep43_case {
 namespace {
 
 Result run(const Params& p) {
@@ -124,4 +124,4 @@ const Registration reg{Case{
 }};
 
 }  // namespace
-}  // namespace sphv
+}  // namespace sphv::extreme_timestep43_case

@@ -8,7 +8,7 @@
 #include "verification/cases/extreme_hydro.hpp"
 #include "verification/sweep.hpp"
 
-namespace sphv {
+namespace sphv::extreme_tubes_case {
 namespace {
 
 struct Problem {
@@ -110,4 +110,4 @@ const Registration reg{Case{
 }};
 
 }  // namespace
-}  // namespace sphv
+}  // namespace sphv::extreme_tubes_case

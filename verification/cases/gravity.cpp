@@ -12,7 +12,7 @@
 #include "verification/cases/gravity_models.hpp"
 #include "verification/sweep.hpp"
 
-namespace sphv {
+namespace sphv::gravity_case {
 namespace {
 
 using namespace gravity;
@@ -287,4 +287,4 @@ const Registration reg{Case{
 }};
 
 }  // namespace
-}  // namespace sphv
+}  // namespace sphv::gravity_case

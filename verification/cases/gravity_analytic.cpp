@@ -19,7 +19,7 @@
 #include "verification/cases/measured_bound.hpp"
 #include "verification/sweep.hpp"
 
-namespace sphv {
+namespace sphv::gravity_analytic_case {
 namespace {
 
 using namespace gravity;
@@ -199,4 +199,4 @@ const Registration reg{Case{
 }};
 
 }  // namespace
-}  // namespace sphv
+}  // namespace sphv::gravity_analytic_case

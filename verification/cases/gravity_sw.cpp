@@ -14,7 +14,7 @@
 #include "verification/cases/gravity_models.hpp"
 #include "verification/sweep.hpp"
 
-namespace sphv {
+namespace sphv::gravity_sw_case {
 namespace {
 
 using namespace gravity;
@@ -132,4 +132,4 @@ const Registration reg{Case{
 }};
 
 }  // namespace
-}  // namespace sphv
+}  // namespace sphv::gravity_sw_case

@@ -14,7 +14,7 @@
 #include "verification/cases/heat_run.hpp"
 #include "verification/sweep.hpp"
 
-namespace sphv {
+namespace sphv::heat_case {
 namespace {
 
 using heat::A, heat::T0, heat::centre, heat::rms_error;
@@ -199,4 +199,4 @@ const Registration reg{Case{
 }};
 
 }  // namespace
-}  // namespace sphv
+}  // namespace sphv::heat_case

@@ -9,7 +9,7 @@
 #include "verification/cases/heat_run.hpp"
 #include "verification/sweep.hpp"
 
-namespace sphv {
+namespace sphv::heat_stability_case {
 namespace {
 
 const std::vector<double> ratios = {2.0, 2.5, 3.0, 4.0};
@@ -120,4 +120,4 @@ const Registration reg{Case{
 }};
 
 }  // namespace
-}  // namespace sphv
+}  // namespace sphv::heat_stability_case

@@ -12,7 +12,7 @@
 #include "verification/cases/heat_run.hpp"
 #include "verification/sweep.hpp"
 
-namespace sphv {
+namespace sphv::heat_stiff_case {
 namespace {
 
 constexpr double T0 = 1.0, A = 0.5;
@@ -200,4 +200,4 @@ const Registration reg{Case{
 }};
 
 }  // namespace
-}  // namespace sphv
+}  // namespace sphv::heat_stiff_case

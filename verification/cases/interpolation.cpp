@@ -13,7 +13,7 @@
 #include "verification/cases/heat_lattice.hpp"
 #include "verification/sweep.hpp"
 
-namespace sphv {
+namespace sphv::interpolation_case {
 namespace {
 
 // Relative L2 error sqrt(sum |a - b|^2 / sum |b|^2) over all particles.
@@ -203,4 +203,4 @@ const Registration reg{Case{
 }};
 
 }  // namespace
-}  // namespace sphv
+}  // namespace sphv::interpolation_case

@@ -14,7 +14,7 @@
 #include "verification/cases/measured_bound.hpp"
 #include "verification/sweep.hpp"
 
-namespace sphv {
+namespace sphv::kepler_case {
 namespace {
 
 using V3 = sph::Vec<3>;
@@ -215,4 +215,4 @@ const Registration reg{Case{
 }};
 
 }  // namespace
-}  // namespace sphv
+}  // namespace sphv::kepler_case

@@ -9,7 +9,7 @@
 #include "verification/case.hpp"
 #include "verification/sweep.hpp"
 
-namespace sphv {
+namespace sphv::kernel_case {
 namespace {
 
 // Surface of the unit sphere in D dimensions: 2, 2 pi, 4 pi.
@@ -183,4 +183,4 @@ const Registration reg{Case{
 }};
 
 }  // namespace
-}  // namespace sphv
+}  // namespace sphv::kernel_case

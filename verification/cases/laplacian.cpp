@@ -11,7 +11,7 @@
 #include "verification/cases/heat_lattice.hpp"
 #include "verification/sweep.hpp"
 
-namespace sphv {
+namespace sphv::laplacian_case {
 namespace {
 
 constexpr double two_pi = 2.0 * std::numbers::pi;
@@ -230,4 +230,4 @@ const Registration reg{Case{
 }};
 
 }  // namespace
-}  // namespace sphv
+}  // namespace sphv::laplacian_case

@@ -15,7 +15,7 @@
 #include "verification/cases/radial_result.hpp"
 #include "verification/sweep.hpp"
 
-namespace sphv {
+namespace sphv::noh_case {
 namespace {
 
 template <int D>
@@ -149,4 +149,4 @@ const Registration reg{Case{
 }};
 
 }  // namespace
-}  // namespace sphv
+}  // namespace sphv::noh_case

@@ -24,7 +24,7 @@
 #include "verification/cases/sedov_setup.hpp"
 #include "verification/sweep.hpp"
 
-namespace sphv {
+namespace sphv::sedov_case {
 namespace {
 
 using sedov::R_target;
@@ -172,4 +172,4 @@ const Registration reg{Case{
 }};
 
 }  // namespace
-}  // namespace sphv
+}  // namespace sphv::sedov_case

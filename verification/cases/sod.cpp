@@ -13,7 +13,7 @@
 #include "verification/cases/sod_tube.hpp"
 #include "verification/sweep.hpp"
 
-namespace sphv {
+namespace sphv::sod_case {
 namespace {
 
 struct Preset {
@@ -326,7 +326,8 @@ const Registration reg2{make_case(2)};
 const Registration reg3{make_case(3)};
 
 }  // namespace
+}  // namespace sphv::sod_case
 
-TubeProblem tube_problem(const Params& p) { return problem(p); }
-
+namespace sphv {
+TubeProblem tube_problem(const Params& p) { return sod_case::problem(p); }
 }  // namespace sphv

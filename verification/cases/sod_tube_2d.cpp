@@ -1,4 +1,4 @@
-// The 2D shock tube, instantiated in its own translation unit (parallel builds).
+// The 2D shock tube instantiated (a file per dimension; one unit in a unity build, CMakeLists.txt).
 #include "verification/cases/sod_simulate.hpp"
 
 namespace sphv {

@@ -10,7 +10,7 @@
 #include "verification/cases/heat_run.hpp"
 #include "verification/sweep.hpp"
 
-namespace sphv {
+namespace sphv::stability_map_heat_case {
 namespace {
 
 const std::vector<double> jitters = {0.0, 0.05, 0.1, 0.2, 0.3};                     // in units of dx
@@ -136,4 +136,4 @@ const Registration reg{Case{
 }};
 
 }  // namespace
-}  // namespace sphv
+}  // namespace sphv::stability_map_heat_case

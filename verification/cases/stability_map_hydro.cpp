@@ -9,7 +9,7 @@
 #include "verification/cases/extreme_hydro.hpp"
 #include "verification/sweep.hpp"
 
-namespace sphv {
+namespace sphv::stability_map_hydro_case {
 namespace {
 
 const std::vector<double> ratios = {10.0, 1e2, 1e3, 1e4, 1e5};
@@ -94,4 +94,4 @@ const Registration reg{Case{
 }};
 
 }  // namespace
-}  // namespace sphv
+}  // namespace sphv::stability_map_hydro_case

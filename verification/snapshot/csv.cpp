@@ -41,7 +41,7 @@ void split(std::string_view line, bool comma, std::vector<std::string_view>& f) 
   }
 }
 
-bool parse_number(std::string_view t, double& v) {
+bool parse_field(std::string_view t, double& v) {
   if (!t.empty() && t.front() == '+') t.remove_prefix(1);
   const auto [ptr, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
   return !t.empty() && ec == std::errc() && ptr == t.data() + t.size();
@@ -60,7 +60,7 @@ std::optional<double> comment_time(std::string_view c) {
   std::size_t end = c.size();
   while (end > e && std::isspace(static_cast<unsigned char>(c[end - 1]))) --end;
   double v;
-  if (!parse_number(c.substr(e, end - e), v)) return std::nullopt;
+  if (!parse_field(c.substr(e, end - e), v)) return std::nullopt;
   return v;
 }
 
@@ -99,7 +99,7 @@ Snapshot read_csv_snapshot(const std::filesystem::path& path) {
       comma = line.find(',') != std::string_view::npos;
       split(line, comma, fields);
       double v;
-      if (parse_number(fields[0], v))
+      if (parse_field(fields[0], v))
         throw InputError(where() + ": no header row (the first row holds numbers; expected names like x,y,z,m,rho)");
       for (const auto& name : fields) {
         std::string c = canonical_column(std::string(name));
@@ -117,7 +117,7 @@ Snapshot read_csv_snapshot(const std::filesystem::path& path) {
     for (std::size_t k = 0; k < fields.size(); ++k) {
       if (!cols[k]) continue;
       double v;
-      if (!parse_number(fields[k], v) || !std::isfinite(v))
+      if (!parse_field(fields[k], v) || !std::isfinite(v))
         throw InputError(where() + ": " + (fields[k].empty() ? std::string("an empty field") : "'" + std::string(fields[k]) + "'") +
                          " in column " + s.taken_from.at(names[k]) + " is not a finite number");
       cols[k]->push_back(v);
