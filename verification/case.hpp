@@ -85,7 +85,9 @@ struct Case {
   bool verdict_expected(const Params& p, const std::string& verdict) const;
 };
 
-// Cases register themselves from their own source file: `static Registration r{make_case()};`
+// Cases register themselves from their own source file: `static Registration r{make_case()};`,
+// with the file's names in a namespace of its own, sphv::<file>_case (the unity build compiles
+// several case files as one translation unit, CMakeLists.txt).
 struct Registration {
   explicit Registration(Case c);
 };
