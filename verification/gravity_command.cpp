@@ -34,12 +34,9 @@ void gravity_command(const GravityCommandOptions& o) {
   std::printf("gravity: N = %zu, theta = %g, %s, %s opening, eps = %g, G = 1\n", s.x.size(), o.theta,
               o.multipole == "mono" ? "monopole" : "quadrupole", o.opening.c_str(), o.eps);
   Table out;
-  // No output file holds a non-finite number.
   auto write = [&] {
-    for (std::size_t c = 0; c < out.columns.size(); ++c)
-      for (double v : out.columns[c])
-        if (!std::isfinite(v))  // the input's numbers overflow the field
-          throw InputError("non-finite " + out.names[c] + " (not written)");
+    if (const auto bad = non_finite_entries(out); !bad.empty())  // the input's numbers overflow the field
+      throw InputError("non-finite " + bad.front() + " (not written)");
     write_atomically(o.out, csv(out));
   };
   const char* axes[] = {"x", "y", "z"};

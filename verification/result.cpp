@@ -99,15 +99,9 @@ std::vector<std::string> non_finite(Result& r, bool fix) {
     }
   }
   non_finite_in(r.extra, "extra", found, fix);
-  bool bad_particles = false;
-  for (std::size_t c = 0; c < r.particles.columns.size(); ++c) {
-    const auto& col = r.particles.columns[c];
-    const auto bad = std::find_if(col.begin(), col.end(), [](double v) { return !std::isfinite(v); });
-    if (bad == col.end()) continue;
-    found.push_back("particles." + r.particles.names[c] + "[" + std::to_string(bad - col.begin()) + "]=" + text(*bad));
-    bad_particles = true;
-  }
-  if (fix && bad_particles) r.particles = {};
+  const auto bad_particles = non_finite_entries(r.particles);
+  for (const auto& e : bad_particles) found.push_back("particles." + e);
+  if (fix && !bad_particles.empty()) r.particles = {};
   return found;
 }
 }  // namespace
@@ -191,6 +185,16 @@ std::string csv(const Table& t) {
     s << '\n';
   }
   return s.str();
+}
+
+std::vector<std::string> non_finite_entries(const Table& t) {
+  std::vector<std::string> found;
+  for (std::size_t c = 0; c < t.columns.size(); ++c) {
+    const auto& col = t.columns[c];
+    const auto bad = std::find_if(col.begin(), col.end(), [](double v) { return !std::isfinite(v); });
+    if (bad != col.end()) found.push_back(t.names[c] + "[" + std::to_string(bad - col.begin()) + "]=" + text(*bad));
+  }
+  return found;
 }
 
 void write_result(const Result& r, const std::filesystem::path& dir) {

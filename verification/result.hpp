@@ -63,5 +63,8 @@ Result result_from_json(const nlohmann::json& j);
 void write_atomically(const std::filesystem::path& path, const std::string& text);
 void write_result(const Result& r, const std::filesystem::path& dir);
 std::string csv(const Table& t);
+// The first non-finite entry of each column that has one, as "name[row]=value" (no output file
+// holds a non-finite number: what writes a table checks it first).
+std::vector<std::string> non_finite_entries(const Table& t);
 
 }  // namespace sphv
