@@ -1,6 +1,5 @@
 #include "verification/params.hpp"
 
-#include <charconv>
 #include <cmath>
 
 namespace sphv {
@@ -26,13 +25,6 @@ ParamSpec choice_param(std::string name, std::string def, std::string help,
 }
 
 namespace {
-
-template <class T>
-bool parse_number(const std::string& s, T& out) {
-  const char* end = s.data() + s.size();
-  auto [ptr, ec] = std::from_chars(s.data(), end, out);
-  return ec == std::errc() && ptr == end && !s.empty();
-}
 
 std::string known_names(const std::vector<ParamSpec>& specs) {
   std::string out;

@@ -1,8 +1,10 @@
 #pragma once
+#include <charconv>
 #include <map>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -14,6 +16,13 @@ namespace sphv {
 struct InputError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
+
+// Whether the whole of text is one number (std::from_chars: no leading '+' or spaces); sets v.
+template <class T>
+bool parse_number(std::string_view text, T& v) {
+  const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+  return !text.empty() && ec == std::errc() && ptr == text.data() + text.size();
+}
 
 // One parameter a case accepts, with its default and the range it must lie in.
 struct ParamSpec {

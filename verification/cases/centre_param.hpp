@@ -1,7 +1,6 @@
 #pragma once
 // The centre of a radially symmetric set-up (sedov, noh) in a scored snapshot: codes put it at
 // the origin or at the box centre. `sphv run` builds its set-ups around the origin.
-#include <charconv>
 #include <cmath>
 #include <string>
 
@@ -24,8 +23,7 @@ sph::Vec<D> centre(const Params& p) {
   for (int d = 0; d < 3 && from <= s.size(); ++d) {
     const std::size_t to = std::min(s.find(',', from), s.size());
     double v = 0.0;
-    const auto [ptr, ec] = std::from_chars(s.data() + from, s.data() + to, v);
-    if (ec != std::errc() || ptr != s.data() + to || !std::isfinite(v))
+    if (!parse_number(std::string_view(s).substr(from, to - from), v) || !std::isfinite(v))
       throw InputError("parameter centre: '" + s + "' is not x,y,z (three finite numbers)");
     if (d < D) c[d] = v;
     from = to + 1;

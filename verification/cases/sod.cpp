@@ -2,7 +2,6 @@
 // left/right state) with the hydrodynamics of 9.2-9.4.2, against the exact Riemann solver
 // (reference/riemann, Toro ch. 4). Errors are L1 over the tube [0, 1] at t_end.
 #include <array>
-#include <charconv>
 #include <cmath>
 #include <map>
 
@@ -37,8 +36,7 @@ double state_value(const Params& p, const std::string& key, double preset_value)
   const std::string& s = p.text(key);
   if (s == "preset") return preset_value;
   double v = 0.0;
-  const auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
-  if (ec != std::errc() || ptr != s.data() + s.size() || !std::isfinite(v))
+  if (!parse_number(s, v) || !std::isfinite(v))
     throw InputError("parameter " + key + ": '" + s + "' is not a finite number");
   return v;
 }

@@ -2,7 +2,6 @@
 // ignored), comma- or whitespace-separated, comment lines beginning with '#'; a comment
 // "# time = T" (or "t: T") gives the time.
 #include <cctype>
-#include <charconv>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -41,10 +40,9 @@ void split(std::string_view line, bool comma, std::vector<std::string_view>& f) 
   }
 }
 
-bool parse_field(std::string_view t, double& v) {
+bool parse_field(std::string_view t, double& v) {  // a number, '+' allowed in front
   if (!t.empty() && t.front() == '+') t.remove_prefix(1);
-  const auto [ptr, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
-  return !t.empty() && ec == std::errc() && ptr == t.data() + t.size();
+  return parse_number(t, v);
 }
 
 // "# time = 0.25", "# t: 0.25", "#time 0.25": the time, else nothing.
