@@ -85,15 +85,19 @@ inline HydroTimes time_hydro_step(sph::Particles<3>& p, const sph::Box<3>& box,
     if (out.steps != steps || first_bad(q)) throw std::runtime_error("bench: the uniform gas went bad: " + out.verdict);
     return Run{seconds, out.searches};
   };
-  // The pair is taken three times and the least difference kept: one pair alone made the
-  // two-thread step vary from 1.43x to 1.80x of one thread's in five runs at N = 125,000.
+  // Each run is taken three times and the step is the difference of the two least times: one pair
+  // alone made the two-thread step vary from 1.43x to 1.80x of one thread's in five runs at
+  // N = 125,000, and the least of three differences was biased low (a slow run of 1 step shrinks
+  // its difference: 2.8x of one thread's step on two threads, measured).
   evolve_for(1);
-  t.step = 1e300;
+  Run one{1e300, 0}, nine{1e300, 0};
   for (int k = 0; k < 3; ++k) {
-    const Run one = evolve_for(1), nine = evolve_for(9);
-    t.step = std::min(t.step, (nine.seconds - one.seconds) / 8.0);
-    t.searches_per_step = static_cast<double>(nine.searches - one.searches) / 8.0;  // the same in every pair
+    const Run a = evolve_for(1), b = evolve_for(9);
+    if (a.seconds < one.seconds) one = a;
+    if (b.seconds < nine.seconds) nine = b;
   }
+  t.step = (nine.seconds - one.seconds) / 8.0;
+  t.searches_per_step = static_cast<double>(nine.searches - one.searches) / 8.0;  // the same in every run
   // Particle state (x, v: 6 doubles; m, rho, p, c, u, h: 6), derivatives (dv/dt: 3; du/dt,
   // drho/dt, dh/dt, mu_max: 4) and the KDK step's scratch of them, neighbour list (one int per pair,
   // an offset and a place in the visiting order per particle).
