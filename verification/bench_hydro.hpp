@@ -63,11 +63,14 @@ inline HydroTimes time_hydro_step(sph::Particles<3>& p, const sph::Box<3>& box,
   derivs(p, d);
   t.step_fresh_search = timer([&] { kdk_leapfrog_step(p, d, at_t, 1e-4, derivs); });
   // A step as evolve takes it (sph/hydro/evolve.hpp: Courant step, lists reused while they cover,
-  // the verdict's check): evolve itself, run for 1 and for 1 + 8 steps from the same state; the
-  // difference over 8 leaves out the start (first evaluation and search). Both are timed alike,
-  // after an untimed run that pays the process's first touch of the buffers (a cold
+  // the verdict's check): evolve itself, run for 1 and for 1 + window steps from the same state; the
+  // difference over the window leaves out the start (first evaluation and search). The window spans
+  // several reuses of a list: with 8 steps it held 3 searches at the skin of 0.1 (0.38 a step, against
+  // 0.28 over 40 steps) and the step came out 8 % too slow (N = 125,000, one thread). Both runs are
+  // timed alike, after an untimed run that pays the process's first touch of the buffers (a cold
   // first run took 1.03 s against 0.52 s warm at N = 125,000 on one thread, and made the difference
   // too small).
+  constexpr long window = 32;
   HydroControls run;
   run.t_end = 1e30;  // ended by the step budget
   struct Run {
@@ -86,18 +89,18 @@ inline HydroTimes time_hydro_step(sph::Particles<3>& p, const sph::Box<3>& box,
     return Run{seconds, out.searches};
   };
   // Each run is taken three times and the step is the difference of the two least times: one pair
-  // alone made the two-thread step vary from 1.43x to 1.80x of one thread's in five runs at
-  // N = 125,000, and the least of three differences was biased low (a slow run of 1 step shrinks
-  // its difference: 2.8x of one thread's step on two threads, measured).
+  // of runs (1 and 1 + 8 steps) alone made the two-thread step vary from 1.43x to 1.80x of one
+  // thread's in five runs at N = 125,000, and the least of three differences was biased low (a slow
+  // run of 1 step shrinks its difference: 2.8x of one thread's step on two threads, measured).
   evolve_for(1);
-  Run one{1e300, 0}, nine{1e300, 0};
+  Run one{1e300, 0}, more{1e300, 0};
   for (int k = 0; k < 3; ++k) {
-    const Run a = evolve_for(1), b = evolve_for(9);
+    const Run a = evolve_for(1), b = evolve_for(1 + window);
     if (a.seconds < one.seconds) one = a;
-    if (b.seconds < nine.seconds) nine = b;
+    if (b.seconds < more.seconds) more = b;
   }
-  t.step = (nine.seconds - one.seconds) / 8.0;
-  t.searches_per_step = static_cast<double>(nine.searches - one.searches) / 8.0;  // the same in every run
+  t.step = (more.seconds - one.seconds) / window;
+  t.searches_per_step = static_cast<double>(more.searches - one.searches) / window;  // the same in every run
   // Particle state (x, v: 6 doubles; m, rho, p, c, u, h: 6), derivatives (dv/dt: 3; du/dt,
   // drho/dt, dh/dt, mu_max: 4) and the KDK step's scratch of them, neighbour list (one int per pair,
   // an offset and a place in the visiting order per particle).
