@@ -79,7 +79,7 @@ template <int D>
 template <int D>
 class VerletList {
  public:
-  explicit VerletList(double skin = 0.1) : skin_(skin) {}
+  explicit VerletList(double skin) : skin_(skin) {}
 
   // The list for the particles at x with support radii h: the last one, or a new search.
   // Throws std::invalid_argument from the search (h not positive and finite, or beyond half a
