@@ -2,11 +2,20 @@
 import html
 
 import report_figures as figs
-from report_data import fmt, read_json
+from report_data import fmt, is_dirty, read_json
 
 
 def pct(x):
     return "" if x is None else f"{100 * x:.1f} %"
+
+
+def dirty_note(pr):
+    """The uncommitted changes the bench was built with, if its provenance records any."""
+    if not is_dirty(pr):
+        return ""
+    changes = (pr.get("source_tree") or {}).get("changes") or []
+    listed = ": " + ", ".join(html.escape(c.strip()) for c in changes) if changes else ""
+    return f" <span class='fail'>with uncommitted changes{listed}</span>"
 
 
 def bench_body(results, out):
@@ -15,7 +24,7 @@ def bench_body(results, out):
     e = html.escape
     body = [f"<h1>sphv benchmarks</h1><p>{e(b['benchmark'])}; {e(str(pr.get('cpu')))}, {pr.get('cores')} cores, build "
             f"{e(str(pr.get('build_type')))} ({e(str(pr.get('cxx_flags')))}), {e(str(pr.get('compiler')))}, commit "
-            f"{e(str(pr.get('git_commit')))}, instruction-set path {e(str(pr.get('isa_path', 'portable')))} (pair loops and tree "
+            f"{e(str(pr.get('git_commit')))}{dirty_note(pr)}, instruction-set path {e(str(pr.get('isa_path', 'portable')))} (pair loops and tree "
             f"walk). Benchmarks, not tests: nothing fails on a time.</p><div class='figs'>"]
     for f in b["figures"]:
         stem = figs.run_figure(f, "", out / "fig" / "bench" / f["name"])
@@ -39,6 +48,9 @@ def bench_body(results, out):
                 ", ".join(f"N={k}: {v:.0f}" for k, v in b.get("peak_resident_bytes_per_particle", {}).items()) +
                 "; neighbour searches per full hydro step (lists reused while they cover): " +
                 ", ".join(f"N={k}: {v:.2f}" for k, v in b.get("searches_per_step", {}).items()) + ".</p>")
+    if "full_step_window" in b:
+        body.append(f"<p>Full hydro step: evolve's own (Courant step, neighbour lists reused while they cover), timed "
+                    f"over the {b['full_step_window']} steps after the first.</p>")
     pk = b.get("peak")
     if pk:
         body.append(f"<p>Share of peak: the hydro forces at {pk['force_pair_flops']:.0f} floating-point operations a pair "

@@ -153,7 +153,7 @@ void bench(const BenchOptions& o) {
       cost[r.stage].x.push_back(r.n);
       cost[r.stage].y.push_back(r.seconds);
     }
-  Figure fig{"bench_cost", "Cost against N, 3D uniform gas (" + std::to_string(tmax) + " threads)", "particles N",
+  Figure fig{"bench_cost", "Cost against N, 3D uniform gas (" + std::to_string(tmax) + (tmax == 1 ? " thread)" : " threads)"), "particles N",
              "wall time [s]", "log", "log", {}};
   nlohmann::json slopes = nlohmann::json::object();
   for (auto& [stage, s] : cost) {
@@ -189,7 +189,8 @@ void bench(const BenchOptions& o) {
   for (const auto& [t, pk] : peak) jp["flops_per_s"][std::to_string(t)] = pk.flops_per_s;
   const nlohmann::json j = {{"benchmark", "3D uniform gas, lattice jittered 0.1 dx, h = 2.4 dx"},
                             {"rows", jr}, {"fitted_slopes", slopes}, {"bytes_per_particle", jb},
-                            {"peak_resident_bytes_per_particle", jm}, {"searches_per_step", js}, {"peak", jp},
+                            {"peak_resident_bytes_per_particle", jm}, {"searches_per_step", js},
+                            {"full_step_window", full_step_window}, {"peak", jp},
                             {"figures", {to_json(fig), to_json(upd)}}, {"provenance", provenance()}};
   write_atomically(o.out / "bench.json", j.dump(1) + "\n");
   std::printf("fitted cost slopes (time ~ N^slope):");

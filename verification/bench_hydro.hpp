@@ -30,6 +30,9 @@ namespace sphv {
 // count keeps the share of peak from overstating.
 constexpr double force_pair_flops = 99.0;
 
+// The steps over which the full step is timed (time_hydro_step).
+constexpr long full_step_window = 32;
+
 struct HydroTimes {
   double forces, step, step_fresh_search, pairs, bytes_per_particle, searches_per_step;
 };
@@ -63,14 +66,13 @@ inline HydroTimes time_hydro_step(sph::Particles<3>& p, const sph::Box<3>& box,
   derivs(p, d);
   t.step_fresh_search = timer([&] { kdk_leapfrog_step(p, d, at_t, 1e-4, derivs); });
   // A step as evolve takes it (sph/hydro/evolve.hpp: Courant step, lists reused while they cover,
-  // the verdict's check): evolve itself, run for 1 and for 1 + window steps from the same state; the
-  // difference over the window leaves out the start (first evaluation and search). The window spans
+  // the verdict's check): evolve itself, run for 1 and for 1 + full_step_window steps from the same state;
+  // the difference over the window leaves out the start (first evaluation and search). The window spans
   // several reuses of a list: with 8 steps it held 3 searches at the skin of 0.1 (0.38 a step, against
   // 0.28 over 40 steps) and the step came out 8 % too slow (N = 125,000, one thread). Both runs are
   // timed alike, after an untimed run that pays the process's first touch of the buffers (a cold
   // first run took 1.03 s against 0.52 s warm at N = 125,000 on one thread, and made the difference
   // too small).
-  constexpr long window = 32;
   HydroControls run;
   run.t_end = 1e30;  // ended by the step budget
   struct Run {
@@ -95,12 +97,12 @@ inline HydroTimes time_hydro_step(sph::Particles<3>& p, const sph::Box<3>& box,
   evolve_for(1);
   Run one{1e300, 0}, more{1e300, 0};
   for (int k = 0; k < 3; ++k) {
-    const Run a = evolve_for(1), b = evolve_for(1 + window);
+    const Run a = evolve_for(1), b = evolve_for(1 + full_step_window);
     if (a.seconds < one.seconds) one = a;
     if (b.seconds < more.seconds) more = b;
   }
-  t.step = (more.seconds - one.seconds) / window;
-  t.searches_per_step = static_cast<double>(more.searches - one.searches) / window;  // the same in every run
+  t.step = (more.seconds - one.seconds) / full_step_window;
+  t.searches_per_step = static_cast<double>(more.searches - one.searches) / full_step_window;  // the same in every run
   // Particle state (x, v: 6 doubles; m, rho, p, c, u, h: 6), derivatives (dv/dt: 3; du/dt,
   // drho/dt, dh/dt, mu_max: 4) and the KDK step's scratch of them, neighbour list (one int per pair,
   // an offset and a place in the visiting order per particle).
