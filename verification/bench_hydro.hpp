@@ -4,7 +4,6 @@
 // neighbour lists reused while they cover, sph/hydro/evolve.hpp), and with a fresh search every
 // step.
 #include <algorithm>
-#include <chrono>
 #include <functional>
 #include <random>
 #include <stdexcept>
@@ -75,34 +74,25 @@ inline HydroTimes time_hydro_step(sph::Particles<3>& p, const sph::Box<3>& box,
   // too small).
   HydroControls run;
   run.t_end = 1e30;  // ended by the step budget
-  struct Run {
-    double seconds;
-    long searches;
-  };
-  auto evolve_for = [&](long steps) {
+  auto evolve_for = [&](long steps) {  // returns the searches made
     run.max_steps = steps;
     Particles<3> q = p;
-    const auto t0 = std::chrono::steady_clock::now();
     const HydroOutcome out = evolve(step, q, box, run);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     // The budget ends the run with its verdict; a state gone bad on the last step also has
     // steps == budget, so the particles are checked as well.
     if (out.steps != steps || first_bad(q)) throw std::runtime_error("bench: the uniform gas went bad: " + out.verdict);
-    return Run{seconds, out.searches};
+    return out.searches;
   };
-  // Each run is taken three times and the step is the difference of the two least times: one pair
-  // of runs (1 and 1 + 8 steps) alone made the two-thread step vary from 1.43x to 1.80x of one
-  // thread's in five runs at N = 125,000, and the least of three differences was biased low (a slow
-  // run of 1 step shrinks its difference: 2.8x of one thread's step on two threads, measured).
+  // Each run timed by timer (its least of a few repetitions; the copy of the state, inside both,
+  // cancels), the step is the difference over the window. The least of three differences instead was
+  // biased low: a slow run of 1 step shrinks its difference (2.8x of one thread's step on two
+  // threads, measured).
   evolve_for(1);
-  Run one{1e300, 0}, more{1e300, 0};
-  for (int k = 0; k < 3; ++k) {
-    const Run a = evolve_for(1), b = evolve_for(1 + full_step_window);
-    if (a.seconds < one.seconds) one = a;
-    if (b.seconds < more.seconds) more = b;
-  }
-  t.step = (more.seconds - one.seconds) / full_step_window;
-  t.searches_per_step = static_cast<double>(more.searches - one.searches) / full_step_window;  // the same in every run
+  long one = 0, more = 0;  // searches: the same in every repetition
+  const double t_one = timer([&] { one = evolve_for(1); });
+  const double t_more = timer([&] { more = evolve_for(1 + full_step_window); });
+  t.step = (t_more - t_one) / full_step_window;
+  t.searches_per_step = static_cast<double>(more - one) / full_step_window;
   // Particle state (x, v: 6 doubles; m, rho, p, c, u, h: 6), derivatives (dv/dt: 3; du/dt,
   // drho/dt, dh/dt, mu_max: 4) and the KDK step's scratch of them, neighbour list (one int per pair,
   // an offset and a place in the visiting order per particle).

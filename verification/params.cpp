@@ -1,6 +1,5 @@
 #include "verification/params.hpp"
 
-#include <cmath>
 
 namespace sphv {
 
@@ -62,7 +61,7 @@ void Params::set(const std::string& key, const std::string& value) {
       throw InputError("parameter " + key + ": '" + value + "' is not an integer");
     number = static_cast<double>(v);
   } else if (s.kind == ParamSpec::Kind::Real) {
-    if (!parse_number(value, number) || !std::isfinite(number))
+    if (!parse_finite(value, number))
       throw InputError("parameter " + key + ": '" + value + "' is not a finite number");
   } else if (!s.choices.empty()) {
     bool ok = false;

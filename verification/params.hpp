@@ -1,5 +1,6 @@
 #pragma once
 #include <charconv>
+#include <cmath>
 #include <map>
 #include <optional>
 #include <stdexcept>
@@ -23,6 +24,8 @@ bool parse_number(std::string_view text, T& v) {
   const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
   return !text.empty() && ec == std::errc() && ptr == text.data() + text.size();
 }
+// Whether the whole of text is one finite number (from_chars also reads "inf" and "nan"); sets v.
+inline bool parse_finite(std::string_view text, double& v) { return parse_number(text, v) && std::isfinite(v); }
 
 // One parameter a case accepts, with its default and the range it must lie in.
 struct ParamSpec {

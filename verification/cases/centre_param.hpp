@@ -1,7 +1,6 @@
 #pragma once
 // The centre of a radially symmetric set-up (sedov, noh) in a scored snapshot: codes put it at
 // the origin or at the box centre. `sphv run` builds its set-ups around the origin.
-#include <cmath>
 #include <string>
 
 #include "sph/core/vec.hpp"
@@ -23,7 +22,7 @@ sph::Vec<D> centre(const Params& p) {
   for (int d = 0; d < 3 && from <= s.size(); ++d) {
     const std::size_t to = std::min(s.find(',', from), s.size());
     double v = 0.0;
-    if (!parse_number(std::string_view(s).substr(from, to - from), v) || !std::isfinite(v))
+    if (!parse_finite(std::string_view(s).substr(from, to - from), v))
       throw InputError("parameter centre: '" + s + "' is not x,y,z (three finite numbers)");
     if (d < D) c[d] = v;
     from = to + 1;

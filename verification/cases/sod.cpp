@@ -36,7 +36,7 @@ double state_value(const Params& p, const std::string& key, double preset_value)
   const std::string& s = p.text(key);
   if (s == "preset") return preset_value;
   double v = 0.0;
-  if (!parse_number(s, v) || !std::isfinite(v))
+  if (!parse_finite(s, v))
     throw InputError("parameter " + key + ": '" + s + "' is not a finite number");
   return v;
 }
