@@ -12,58 +12,26 @@
 
 namespace sph {
 
-// The pairs (i, cj[t]), t < count, with |r_ij| < max(h_i, h_j), appended to js in their order;
-// returns how many. In batches: a branch-free loop the compiler vectorises (positions gathered
-// from one array per dimension, hydro/pairs.hpp) marks the pairs to keep, then a loop writes every
-// candidate and advances past the kept ones, with no branch to mispredict.
-template <int D>
-inline std::size_t pairs_within(std::size_t i, const int* cj, std::size_t count, const Components<D>& xs,
-                                const std::vector<double>& h, const Vec<D>& L, const Vec<D>& wrap, int* js) {
-  constexpr std::size_t batch = 128;
-  int keep[batch];
-  std::size_t used = 0;
-  const double hi = h[i];
-  for (std::size_t t0 = 0; t0 < count; t0 += batch) {
-    const int nb = static_cast<int>(std::min(count - t0, batch));
-#pragma omp simd
-    for (int t = 0; t < nb; ++t) {
-      const int j = cj[t0 + t];
-      const double hm = std::max(hi, h[j]);
-      keep[t] = distance2<D>(i, j, xs, L, wrap) < hm * hm;
-    }
-    for (int t = 0; t < nb; ++t) {
-      js[used] = cj[t0 + t];
-      used += keep[t];
-    }
-  }
-  return used;
-}
+// A particle's position and support radius in one 32-byte record, {x_1 .. x_D, (unused), h}: the
+// pair filter loads a candidate's with one aligned load (four candidates at a time, then
+// transposed) instead of four scattered ones.
+struct alignas(32) Site {
+  double x[3];
+  double h;
+};
 
-// pairs_within for the particles i = first .. last-1 into js, with offset[i + 1] = the count so
-// far, in two copies like the pair loops (hydro/pairs.hpp): portable, and AVX2 + FMA.
+// For i = first .. last-1: the pairs (i, j) of list with |r_ij| < max(h_i, h_j), appended to js
+// in the list's order, with offset[i + 1] = the count so far; returns the count. Compiled in
+// search/verlet_list.cpp in two copies like the pair loops (core/isa.hpp): portable, and AVX2 + FMA.
 template <int D>
-std::size_t select_pairs(std::size_t first, std::size_t last, const NeighbourList& list, const Components<D>& xs,
-                         const std::vector<double>& h, const Vec<D>& L, const Vec<D>& wrap, int* js,
-                         std::vector<std::size_t>& offset) {
-  std::size_t used = 0;
-  for (std::size_t i = first; i < last; ++i) {
-    used += pairs_within<D>(i, list.j.data() + list.offset[i], list.offset[i + 1] - list.offset[i], xs, h, L, wrap,
-                            js + used);
-    offset[i + 1] = used;
-  }
-  return used;
-}
-#ifdef SPH_AVX2_COPY
-template <int D>
-[[gnu::target("avx2,fma"), gnu::flatten]] std::size_t select_pairs_avx2(std::size_t first, std::size_t last,
-                                                                       const NeighbourList& list,
-                                                                       const Components<D>& xs,
-                                                                       const std::vector<double>& h, const Vec<D>& L,
-                                                                       const Vec<D>& wrap, int* js,
-                                                                       std::vector<std::size_t>& offset) {
-  return select_pairs<D>(first, last, list, xs, h, L, wrap, js, offset);
-}
-#endif
+std::size_t select_pairs(bool avx2, std::size_t first, std::size_t last, const NeighbourList& list,
+                         const Site* sites, const Vec<D>& L, const Vec<D>& wrap, int* js, std::size_t* offset);
+extern template std::size_t select_pairs<1>(bool, std::size_t, std::size_t, const NeighbourList&, const Site*,
+                                            const Vec<1>&, const Vec<1>&, int*, std::size_t*);
+extern template std::size_t select_pairs<2>(bool, std::size_t, std::size_t, const NeighbourList&, const Site*,
+                                            const Vec<2>&, const Vec<2>&, int*, std::size_t*);
+extern template std::size_t select_pairs<3>(bool, std::size_t, std::size_t, const NeighbourList&, const Site*,
+                                            const Vec<3>&, const Vec<3>&, int*, std::size_t*);
 
 // Neighbour lists reused across steps (a Verlet list: 9.4.3's search with a skin). A search at
 // positions x0 and support radii h0 lists the pairs within the padded radii (1 + skin) h0, and
@@ -136,11 +104,16 @@ class VerletList {
     active_.offset.resize(n + 1);  // every entry is written below
     active_.offset[0] = 0;
     active_.order = list_.order;
-    copy_components<D>(x, xs_);
+    sites_.resize(n);  // every entry is written below
     std::vector<std::size_t> base;
 #pragma omp parallel if (n >= parallel_threshold)
     {
       const int nt = omp_get_num_threads(), t = omp_get_thread_num();
+#pragma omp for schedule(static)
+      for (std::size_t k = 0; k < n; ++k) {
+        for (int d = 0; d < D; ++d) sites_[k].x[d] = x[k][d];
+        sites_[k].h = h[k];
+      }
 #pragma omp single
       {
         if (parts_.size() < static_cast<std::size_t>(nt)) parts_.resize(nt);
@@ -152,13 +125,8 @@ class VerletList {
       const std::size_t bound = list_.offset[last] - list_.offset[first];
       auto& js = t == 0 ? active_.j : parts_[t];
       if (js.size() < bound) js.resize(bound);
-      std::size_t used;
-#ifdef SPH_AVX2_COPY
-      if (D >= 2 && avx2_loops(isa_path()))
-        used = select_pairs_avx2<D>(first, last, list_, xs_, h, L, wrap, js.data(), active_.offset);
-      else
-#endif
-        used = select_pairs<D>(first, last, list_, xs_, h, L, wrap, js.data(), active_.offset);
+      const std::size_t used = select_pairs<D>(avx2_loops(isa_path()), first, last, list_, sites_.data(), L, wrap,
+                                               js.data(), active_.offset.data());
       base[t + 1] = used;
 #pragma omp barrier
 #pragma omp single
@@ -173,7 +141,7 @@ class VerletList {
   double skin_, used_skin_ = 0.0;
   NeighbourList list_, active_;
   std::vector<std::vector<int, DefaultInitAllocator<int>>> parts_;  // select's buffers, threads 1, 2, ...
-  Components<D> xs_;                      // the positions select reads
+  std::vector<Site, DefaultInitAllocator<Site>> sites_;  // the positions and radii select reads
   GridSearchBuffers<D> buffers_;          // the search's, kept likewise
   std::vector<double> reach_;             // the padded radii searched
   std::vector<Vec<D>> x0_;
