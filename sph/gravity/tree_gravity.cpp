@@ -20,7 +20,7 @@ template <Multipole M, Opening O>
 
 // Half the time of the AVX2 copy at N = 125,000: the sum's lanes are 8 targets, not 4.
 template <Multipole M, Opening O>
-[[gnu::flatten, gnu::target("avx512f,avx512vl,avx512dq,avx512bw,fma,prefer-vector-width=512")]] void group_avx512(
+[[gnu::flatten, gnu::target(SPH_AVX512_TARGET)]] void group_avx512(
     const detail::Walk& w, detail::Lanes in, detail::Group& g) {
   detail::group_field<M, O>(w, in, g);
 }

@@ -33,24 +33,34 @@ template <int D, class K>
                                                                    const Vec<D>& wrap, PairBatch<D>& b) {
   batch_geometry<D, K>(i, js, nb, xs, h, L, wrap, b);
 }
+template <int D, class K>
+[[gnu::target(SPH_AVX512_TARGET), gnu::flatten]] void batch_geometry_avx512(std::size_t i, const int* js, int nb,
+                                                                          const Components<D>& xs,
+                                                                          const std::vector<double>& h,
+                                                                          const Vec<D>& L, const Vec<D>& wrap,
+                                                                          PairBatch<D>& b) {
+  batch_geometry<D, K>(i, js, nb, xs, h, L, wrap, b);
+}
 #endif
 }  // namespace
 
 template <int D, class K>
-void pair_geometry([[maybe_unused]] bool avx2, std::size_t i, const int* js, int nb, const Components<D>& xs,
+void pair_geometry([[maybe_unused]] IsaPath path, std::size_t i, const int* js, int nb, const Components<D>& xs,
                    const std::vector<double>& h, const Vec<D>& L, const Vec<D>& wrap, PairBatch<D>& b) {
 #ifdef SPH_AVX2_COPY
-  if constexpr (D >= 2)  // 1D keeps the portable copy (pairs.hpp)
-    if (avx2) return batch_geometry_avx2<D, K>(i, js, nb, xs, h, L, wrap, b);
+  if constexpr (D == 3)  // the copies of loop_path (core/isa.hpp)
+    if (path == IsaPath::avx512) return batch_geometry_avx512<D, K>(i, js, nb, xs, h, L, wrap, b);
+  if constexpr (D >= 2)
+    if (path != IsaPath::portable) return batch_geometry_avx2<D, K>(i, js, nb, xs, h, L, wrap, b);
 #endif
   batch_geometry<D, K>(i, js, nb, xs, h, L, wrap, b);
 }
 
-template void pair_geometry<1, CubicSpline<1>>(bool, std::size_t, const int*, int, const Components<1>&,
+template void pair_geometry<1, CubicSpline<1>>(IsaPath, std::size_t, const int*, int, const Components<1>&,
                                                const std::vector<double>&, const Vec<1>&, const Vec<1>&, PairBatch<1>&);
-template void pair_geometry<2, CubicSpline<2>>(bool, std::size_t, const int*, int, const Components<2>&,
+template void pair_geometry<2, CubicSpline<2>>(IsaPath, std::size_t, const int*, int, const Components<2>&,
                                                const std::vector<double>&, const Vec<2>&, const Vec<2>&, PairBatch<2>&);
-template void pair_geometry<3, CubicSpline<3>>(bool, std::size_t, const int*, int, const Components<3>&,
+template void pair_geometry<3, CubicSpline<3>>(IsaPath, std::size_t, const int*, int, const Components<3>&,
                                                const std::vector<double>&, const Vec<3>&, const Vec<3>&, PairBatch<3>&);
 
 }  // namespace sph

@@ -65,15 +65,15 @@ struct PairBatch {
 // 3D, core/isa.hpp). Compiled once in hydro/pair_geometry.cpp rather than inlined into every
 // scene's pair loop: the scenes do not change it, and the build would compile it again in each.
 template <int D, class K>
-void pair_geometry(bool avx2, std::size_t i, const int* js, int nb, const Components<D>& xs,
+void pair_geometry(IsaPath path, std::size_t i, const int* js, int nb, const Components<D>& xs,
                    const std::vector<double>& h, const Vec<D>& L, const Vec<D>& wrap, PairBatch<D>& b);
-extern template void pair_geometry<1, CubicSpline<1>>(bool, std::size_t, const int*, int, const Components<1>&,
+extern template void pair_geometry<1, CubicSpline<1>>(IsaPath, std::size_t, const int*, int, const Components<1>&,
                                                       const std::vector<double>&, const Vec<1>&, const Vec<1>&,
                                                       PairBatch<1>&);
-extern template void pair_geometry<2, CubicSpline<2>>(bool, std::size_t, const int*, int, const Components<2>&,
+extern template void pair_geometry<2, CubicSpline<2>>(IsaPath, std::size_t, const int*, int, const Components<2>&,
                                                       const std::vector<double>&, const Vec<2>&, const Vec<2>&,
                                                       PairBatch<2>&);
-extern template void pair_geometry<3, CubicSpline<3>>(bool, std::size_t, const int*, int, const Components<3>&,
+extern template void pair_geometry<3, CubicSpline<3>>(IsaPath, std::size_t, const int*, int, const Components<3>&,
                                                       const std::vector<double>&, const Vec<3>&, const Vec<3>&,
                                                       PairBatch<3>&);
 
@@ -85,7 +85,7 @@ extern template void pair_geometry<3, CubicSpline<3>>(bool, std::size_t, const i
 // and Laplacian interpolants (for_each_pair); a scene's terms go through Scene::sums_of, which
 // also vectorises the terms.
 template <int D, class K, class Acc, class F, class Store>
-inline void pairs_of(std::size_t i, bool avx2, const Components<D>& xs, const std::vector<double>& h,
+inline void pairs_of(std::size_t i, IsaPath path, const Components<D>& xs, const std::vector<double>& h,
                      const NeighbourList& nl, const Vec<D>& L, const Vec<D>& wrap, F& f, Store& store) {
   PairBatch<D> b;
   const int* js = nl.j.data() + nl.offset[i];
@@ -93,7 +93,7 @@ inline void pairs_of(std::size_t i, bool avx2, const Components<D>& xs, const st
   Acc acc{};
   for (int t0 = 0; t0 < count; t0 += b.size) {
     const int nb = std::min(count - t0, b.size);
-    pair_geometry<D, K>(avx2, i, js + t0, nb, xs, h, L, wrap, b);
+    pair_geometry<D, K>(path, i, js + t0, nb, xs, h, L, wrap, b);
     for (int t = 0; t < nb; ++t)
       if (b.r[t] < b.h[t]) {
         Vec<D> rij;
@@ -130,8 +130,8 @@ inline double weight_sum_of(std::size_t i, const Components<D>& xs, const std::v
   return sum;
 }
 
-// visit(i) for the particles the loop visits k0 .. k1-1, in two copies (core/isa.hpp): portable, and
-// with AVX2 and FMA (1.4x on the 3D force loop). Flattened: every call inside (the pair loop, the
+// visit(i) for the particles the loop visits k0 .. k1-1, in three copies (core/isa.hpp): portable,
+// with AVX2 and FMA (1.4x on the 3D force loop), and with AVX-512. Flattened: every call inside (the pair loop, the
 // scene's terms, the kernel) is inlined and so compiled for the copy's instruction set; left to
 // GCC's heuristics, a term that many scenes use (the viscosity) stayed a portable call inside the
 // AVX2 loop, 10 % of a 3D step.
@@ -145,22 +145,31 @@ template <class Visit>
                                                                  const NeighbourList& nl, Visit& visit) {
   for (std::size_t k = k0; k < k1; ++k) visit(nl.visit(k));
 }
+template <class Visit>
+[[gnu::flatten, gnu::target(SPH_AVX512_TARGET)]] void particles_in_avx512(std::size_t k0, std::size_t k1,
+                                                                         const NeighbourList& nl, Visit& visit) {
+  for (std::size_t k = k0; k < k1; ++k) visit(nl.visit(k));
+}
 #endif
 
 // visit(i) for every particle i, in the list's visiting order, in chunks of 256 handed out to
 // threads as they come free. Each i is handled by one thread and writes only i's outputs, so the
-// result is independent of the thread count. 1D keeps the portable copy only: 1D runs are small,
-// and a second copy would cost compile time, not run time.
+// result is independent of the thread count. The copy is loop_path's (core/isa.hpp).
 template <int D, class Visit>
 void for_each_particle(std::size_t n, const NeighbourList& nl, Visit&& visit) {
   constexpr std::size_t chunk = 256;
-  [[maybe_unused]] const bool avx2 = D >= 2 && avx2_loops(isa_path());
+  [[maybe_unused]] const IsaPath path = loop_path<D>(isa_path());
 #pragma omp parallel for schedule(dynamic) if (n >= parallel_threshold)
   for (std::size_t k0 = 0; k0 < n; k0 += chunk) {
     const std::size_t k1 = std::min(n, k0 + chunk);
 #ifdef SPH_AVX2_COPY
+    if constexpr (D == 3)
+      if (path == IsaPath::avx512) {
+        particles_in_avx512(k0, k1, nl, visit);
+        continue;
+      }
     if constexpr (D >= 2)
-      if (avx2) {
+      if (path == IsaPath::avx2) {
         particles_in_avx2(k0, k1, nl, visit);
         continue;
       }
@@ -175,9 +184,9 @@ void sum_over_pairs(const std::vector<Vec<D>>& x, const std::vector<double>& h, 
                     const Box<D>& box, F&& f, Store&& store) {
   const Vec<D> L = box.length(), wrap = box.wrap_factor();
   const Components<D> xs = components<D>(x);
-  const bool avx2 = avx2_loops(isa_path());
+  const IsaPath path = loop_path<D>(isa_path());
   for_each_particle<D>(x.size(), nl,
-                       [&](std::size_t i) { pairs_of<D, K, Acc>(i, avx2, xs, h, nl, L, wrap, f, store); });
+                       [&](std::size_t i) { pairs_of<D, K, Acc>(i, path, xs, h, nl, L, wrap, f, store); });
 }
 
 // store(i, sum of g(j, |r_ij|, h_ij) over i's pairs) for every particle i (weight_sum_of: g must

@@ -95,9 +95,9 @@ struct Scene {
     if constexpr ((has_pair<Terms> || ...)) {
       const Components<D> xs = components<D>(p.x), vs = components<D>(p.v);
       const Vec<D> L = nb.box.length(), wrap = nb.box.wrap_factor();
-      const bool avx2 = avx2_loops(isa_path());
+      const IsaPath path = loop_path<D>(isa_path());
       for_each_particle<D>(p.size(), nb.list,
-                           [&](std::size_t i) { sums_of(i, avx2, p, xs, vs, nb.list, L, wrap, d); });
+                           [&](std::size_t i) { sums_of(i, path, p, xs, vs, nb.list, L, wrap, d); });
     }
     std::apply([&](auto&... t) { (finish(t, p, nb, d), ...); }, terms);
   }
@@ -142,7 +142,7 @@ struct Scene {
   // its share set to 0), then the shares summed in list order, so the sums do not depend on the
   // vector width. A term adds to a PairSums that starts at 0 for each pair. The bench's force
   // loop: 9.6-9.9 -> 7.3-7.4 ns a pair on the AVX2 path (measured, N = 125,000, one thread).
-  void sums_of(std::size_t i, bool avx2, const Particles<D>& p, const Components<D>& xs, const Components<D>& vs,
+  void sums_of(std::size_t i, IsaPath path, const Particles<D>& p, const Components<D>& xs, const Components<D>& vs,
                const NeighbourList& nl,
                const Vec<D>& L, const Vec<D>& wrap, Derivatives<D>& d) const {
     PairBatch<D> b;
@@ -154,7 +154,7 @@ struct Scene {
     for (int k = 0; k < D; ++k) vi[k] = vs[k][i];
     for (int t0 = 0; t0 < count; t0 += b.size) {
       const int nb = std::min(count - t0, b.size);
-      pair_geometry<D, CubicSpline<D>>(avx2, i, js + t0, nb, xs, p.h, L, wrap, b);
+      pair_geometry<D, CubicSpline<D>>(path, i, js + t0, nb, xs, p.h, L, wrap, b);
 #pragma omp simd
       for (int t = 0; t < nb; ++t) share(t, i, js[t0 + t], p, vi, vs, b, sh);
       // Adding a share of +0 or -0 (0 times the pair's value) leaves a sum that starts at +0
