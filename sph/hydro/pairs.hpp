@@ -61,8 +61,8 @@ struct PairBatch {
 };
 
 // Fills b for the pairs (i, js[t]), t < nb, without a branch, in a loop the compiler vectorises
-// (gathers of x_j and h_j, the kernel's pieces as masks); on the AVX2 + FMA copy if avx2 (2D and
-// 3D, core/isa.hpp). Compiled once in hydro/pair_geometry.cpp rather than inlined into every
+// (gathers of x_j and h_j, the kernel's pieces as masks); in the copy of path (loop_path,
+// core/isa.hpp). Compiled once in hydro/pair_geometry.cpp rather than inlined into every
 // scene's pair loop: the scenes do not change it, and the build would compile it again in each.
 template <int D, class K>
 void pair_geometry(IsaPath path, std::size_t i, const int* js, int nb, const Components<D>& xs,
@@ -131,10 +131,10 @@ inline double weight_sum_of(std::size_t i, const Components<D>& xs, const std::v
 }
 
 // visit(i) for the particles the loop visits k0 .. k1-1, in three copies (core/isa.hpp): portable,
-// with AVX2 and FMA (1.4x on the 3D force loop), and with AVX-512. Flattened: every call inside (the pair loop, the
-// scene's terms, the kernel) is inlined and so compiled for the copy's instruction set; left to
-// GCC's heuristics, a term that many scenes use (the viscosity) stayed a portable call inside the
-// AVX2 loop, 10 % of a 3D step.
+// with AVX2 and FMA (1.4x on the 3D force loop), and with AVX-512 (3D only). Flattened: every call
+// inside (the pair loop, the scene's terms, the kernel) is inlined and so compiled for the copy's
+// instruction set; left to GCC's heuristics, a term that many scenes use (the viscosity) stayed a
+// portable call inside the AVX2 loop, 10 % of a 3D step.
 template <class Visit>
 [[gnu::flatten]] void particles_in_portable(std::size_t k0, std::size_t k1, const NeighbourList& nl, Visit& visit) {
   for (std::size_t k = k0; k < k1; ++k) visit(nl.visit(k));
