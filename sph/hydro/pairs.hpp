@@ -40,7 +40,7 @@ Components<D> components(const std::vector<Vec<D>>& x) {
 }
 
 // |r_i - r_j|^2 at the nearest image, from positions held one array per dimension: the distance
-// of the vectorised pair loops (density, list selection).
+// of the vectorised density loop (weight_sum_of).
 template <int D>
 inline double distance2(std::size_t i, int j, const Components<D>& xs, const Vec<D>& L, const Vec<D>& wrap) {
   double r2 = 0.0;

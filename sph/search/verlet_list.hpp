@@ -42,8 +42,9 @@ extern template std::size_t select_pairs<3>(bool, std::size_t, std::size_t, cons
 //   (a) d_k + g_k <= skin h0_k / 2 for every k (particles that move, each by its own h), or
 //   (b) 2 max_k d_k + g_k <= skin h0_k for every k (particles at rest while h changes, as in (50)).
 // Each evaluation gets the pairs of the padded list that interact, as a fresh search would list
-// them; filtering costs about a third of a grid search (which tests ~3.7x more candidates). The
-// padding is dropped where it would exceed half a periodic box.
+// them; filtering costs about a sixth of a grid search (0.015 s against 0.084 s at N = 125,000 on
+// one thread; the search tests ~3.7x more candidates). The padding is dropped where it would
+// exceed half a periodic box.
 template <int D>
 class VerletList {
  public:
