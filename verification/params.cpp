@@ -1,6 +1,5 @@
 #include "verification/params.hpp"
 
-
 namespace sphv {
 
 ParamSpec integer_param(std::string name, long def, std::string help, std::optional<double> gt) {

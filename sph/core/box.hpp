@@ -28,11 +28,12 @@ struct Box {
 // Rounds s = dx / L to the nearest integer by adding and subtracting 1.5 * 2^52 (exact for
 // |s| < 2^51 in the default rounding mode): no branch on the sign of dx, which pair loops would
 // mispredict half the time, and no library call (std::nearbyint is one without SSE4.1).
-// One dimension of it (wrap = 1/L, or 0 where open).
+// One dimension of it (wrap = 1/L, or 0 where open); the vectorised pair filter
+// (search/verlet_list.cpp) rounds with the same shift.
+inline constexpr double min_image_shift = 6755399441055744.0;  // 1.5 * 2^52
 inline double min_image(double dx, double L, double wrap) {
-  constexpr double round_shift = 6755399441055744.0;  // 1.5 * 2^52
-  const double s = dx * wrap + round_shift;           // IEEE: not folded without -ffast-math
-  return dx - L * (s - round_shift);
+  const double s = dx * wrap + min_image_shift;  // IEEE: not folded without -ffast-math
+  return dx - L * (s - min_image_shift);
 }
 template <int D>
 inline Vec<D> min_image(Vec<D> dx, const Vec<D>& L, const Vec<D>& wrap) {

@@ -74,7 +74,7 @@ constexpr std::array<std::array<unsigned char, 16>, 16> compaction = [] {
 
 // min_image (core/box.hpp) of four separations.
 [[gnu::target("avx2,fma")]] inline __m256d image(__m256d dx, __m256d L, __m256d wrap) {
-  const __m256d shift = _mm256_set1_pd(6755399441055744.0);
+  const __m256d shift = _mm256_set1_pd(min_image_shift);
   return _mm256_fnmadd_pd(L, _mm256_sub_pd(_mm256_fmadd_pd(dx, wrap, shift), shift), dx);
 }
 
