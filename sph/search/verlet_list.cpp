@@ -1,8 +1,8 @@
 // The pair filter of the reused neighbour lists (search/verlet_list.hpp), compiled once per
 // dimension and instruction-set path.
 #include <algorithm>
-#include <array>
 
+#include "sph/search/lane_compaction.hpp"
 #include "sph/search/verlet_list.hpp"
 
 #ifdef SPH_AVX2_COPY
@@ -56,22 +56,6 @@ inline std::size_t select_range(std::size_t first, std::size_t last, const Neigh
 }
 
 #ifdef SPH_AVX2_COPY
-// compaction[m]: the byte shuffle that moves the 32-bit lanes set in the 4-bit mask m to the front.
-constexpr std::array<std::array<unsigned char, 16>, 16> compaction = [] {
-  std::array<std::array<unsigned char, 16>, 16> c{};
-  for (int m = 0; m < 16; ++m) {
-    int k = 0;
-    for (int e = 0; e < 4; ++e)
-      if (m >> e & 1) {
-        for (int b = 0; b < 4; ++b) c[m][4 * k + b] = static_cast<unsigned char>(4 * e + b);
-        ++k;
-      }
-    for (; k < 4; ++k)
-      for (int b = 0; b < 4; ++b) c[m][4 * k + b] = 0x80;  // zero
-  }
-  return c;
-}();
-
 // min_image (core/box.hpp) of four separations.
 [[gnu::target("avx2,fma")]] inline __m256d image(__m256d dx, __m256d L, __m256d wrap) {
   const __m256d shift = _mm256_set1_pd(min_image_shift);

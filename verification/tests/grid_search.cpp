@@ -53,17 +53,54 @@ void compare(std::size_t n, bool periodic, double hmin, double hmax, unsigned se
 
 }  // namespace
 
+// On every instruction-set path this CPU has (the 3D candidate loop has an AVX2 copy).
 TEST_CASE("grid search equals brute force", "[neighbours]") {
-  for (bool periodic : {true, false}) {
-    compare<1>(300, periodic, 0.01, 0.05, 1);
-    compare<2>(800, periodic, 0.03, 0.08, 2);
-    compare<3>(1500, periodic, 0.05, 0.15, 3);
-    compare<3>(400, periodic, 0.2, 0.45, 4);  // only 2-4 cells per axis: stencils wrap onto themselves
-    compare<2>(500, periodic, 0.1, 0.1, 5);   // constant h
-    compare<2>(5000, periodic, 0.01, 0.03, 6, 0.2);  // a few wide particles; above parallel_threshold
-    compare<3>(5000, periodic, 0.04, 0.08, 7, 0.45);
-    compare<3>(5000, periodic, 0.05, 0.07, 8);  // nearly uniform h: cells of h_max / 2
+  const sph::IsaPath chosen = sph::isa_path();
+  for (sph::IsaPath path : {sph::IsaPath::portable, sph::IsaPath::avx2}) {
+    if (!sph::isa_supported(path)) continue;
+    sph::set_isa_path(path);
+    for (bool periodic : {true, false}) {
+      compare<1>(300, periodic, 0.01, 0.05, 1);
+      compare<2>(800, periodic, 0.03, 0.08, 2);
+      compare<3>(1500, periodic, 0.05, 0.15, 3);
+      compare<3>(400, periodic, 0.2, 0.45, 4);  // only 2-4 cells per axis: stencils wrap onto themselves
+      compare<2>(500, periodic, 0.1, 0.1, 5);   // constant h
+      compare<2>(5000, periodic, 0.01, 0.03, 6, 0.2);  // a few wide particles; above parallel_threshold
+      compare<3>(5000, periodic, 0.04, 0.08, 7, 0.45);
+      compare<3>(5000, periodic, 0.05, 0.07, 8);  // nearly uniform h: cells of h_max / 2
+    }
   }
+  sph::set_isa_path(chosen);
+}
+
+// The vectorised candidate loop rounds as the portable one: the same lists in the same order, on a
+// lattice where many pairs sit exactly at |r_ij| = h (ties decided alike) and on a jittered one.
+TEST_CASE("grid search lists the same pairs on every instruction-set path", "[neighbours]") {
+  if (!sph::isa_supported(sph::IsaPath::avx2)) return;
+  const sph::IsaPath chosen = sph::isa_path();
+  for (double jitter : {0.0, 0.3}) {
+    std::mt19937 rng(21);
+    std::uniform_real_distribution<double> u(-0.5, 0.5);
+    const int side = 20;
+    const double dx = 1.0 / side;
+    std::vector<sph::Vec<3>> x;
+    for (int a = 0; a < side; ++a)
+      for (int b = 0; b < side; ++b)
+        for (int c = 0; c < side; ++c)
+          x.push_back(dx * sph::Vec<3>(a + jitter * u(rng), b + jitter * u(rng), c + jitter * u(rng)));
+    std::vector<double> h(x.size(), 2.0 * dx);
+    for (bool periodic : {true, false}) {
+      const sph::Box<3> box = sph::unit_box<3>(periodic);
+      sph::set_isa_path(sph::IsaPath::portable);
+      const auto portable = sph::grid_search<3>(x, h, box);
+      sph::set_isa_path(sph::IsaPath::avx2);
+      const auto avx2 = sph::grid_search<3>(x, h, box);
+      REQUIRE(avx2.offset == portable.offset);
+      REQUIRE(avx2.j == portable.j);
+      REQUIRE(avx2.order == portable.order);
+    }
+  }
+  sph::set_isa_path(chosen);
 }
 
 namespace {
