@@ -1,4 +1,5 @@
 #pragma once
+#include <algorithm>
 #include <cstdlib>
 #include <stdexcept>
 #include <string>
@@ -35,11 +36,12 @@ inline bool avx2_loops(IsaPath p) { return p != IsaPath::portable; }
 // The copy of a D-dimensional scene's pair loops that path p runs: in 1D the portable one (1D runs
 // are small; another copy would cost compile time, not run time), in 2D at most AVX2, in 3D p's
 // own (AVX-512: the bench's force loop 7.0-7.4 -> 6.1-6.5 ns a pair, the density 2.5-2.6 -> 2.4,
-// N = 125,000, one thread, measured).
+// N = 125,000, one thread, measured); never wider than the widest copy a scene has compiled
+// (hydro/scene.hpp: WidestLoopCopy).
 template <int D>
-IsaPath loop_path(IsaPath p) {
+IsaPath loop_path(IsaPath p, IsaPath widest = IsaPath::avx512) {
   if (D == 1) return IsaPath::portable;
-  return D == 2 && p == IsaPath::avx512 ? IsaPath::avx2 : p;
+  return std::min({p, widest, D == 2 ? IsaPath::avx2 : IsaPath::avx512});
 }
 
 inline bool isa_supported(IsaPath p) {

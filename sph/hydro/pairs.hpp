@@ -154,21 +154,22 @@ template <class Visit>
 
 // visit(i) for every particle i, in the list's visiting order, in chunks of 256 handed out to
 // threads as they come free. Each i is handled by one thread and writes only i's outputs, so the
-// result is independent of the thread count. The copy is loop_path's (core/isa.hpp).
-template <int D, class Visit>
+// result is independent of the thread count. The copies compiled are those up to `widest`; the one
+// run is loop_path's (core/isa.hpp).
+template <int D, IsaPath widest = IsaPath::avx512, class Visit>
 void for_each_particle(std::size_t n, const NeighbourList& nl, Visit&& visit) {
   constexpr std::size_t chunk = 256;
-  [[maybe_unused]] const IsaPath path = loop_path<D>(isa_path());
+  [[maybe_unused]] const IsaPath path = loop_path<D>(isa_path(), widest);
 #pragma omp parallel for schedule(dynamic) if (n >= parallel_threshold)
   for (std::size_t k0 = 0; k0 < n; k0 += chunk) {
     const std::size_t k1 = std::min(n, k0 + chunk);
 #ifdef SPH_AVX2_COPY
-    if constexpr (D == 3)
+    if constexpr (D == 3 && widest == IsaPath::avx512)
       if (path == IsaPath::avx512) {
         particles_in_avx512(k0, k1, nl, visit);
         continue;
       }
-    if constexpr (D >= 2)
+    if constexpr (D >= 2 && widest != IsaPath::portable)
       if (path == IsaPath::avx2) {
         particles_in_avx2(k0, k1, nl, visit);
         continue;

@@ -34,15 +34,17 @@ struct Catalogue {
 };
 
 // One Euler/energy pairing on a copy of `initial`: summation density (27), ideal gas with
-// gamma = 5/3, fixed support radii (h_ij symmetric), optionally artificial viscosity.
+// gamma = 5/3, fixed support radii (h_ij symmetric), optionally artificial viscosity. The blobs
+// are small: the pair loops' copies stop at AVX2 (WidestLoopCopy, sph/hydro/scene.hpp).
 template <int D>
 Drifts run_pairing(const sph::Particles<D>& initial, const EulerChoice& e, const std::string& energy_form,
                    bool viscosity, sph::IntegratorKind integrator, double dt, long steps) {
   Drifts out;
   auto go = [&](auto... terms) {
     sph::Particles<D> p = initial;
-    sph::Scene<D, sph::SummationDensity<D>, sph::EquationOfState<D, sph::IdealGas>, decltype(terms)...> scene{
-        {sph::SummationDensity<D>{}, sph::EquationOfState<D, sph::IdealGas>{{5.0 / 3.0}}, terms...}};
+    using Copies = sph::WidestLoopCopy<sph::IsaPath::avx2>;
+    sph::Scene<D, Copies, sph::SummationDensity<D>, sph::EquationOfState<D, sph::IdealGas>, decltype(terms)...> scene{
+        {Copies{}, sph::SummationDensity<D>{}, sph::EquationOfState<D, sph::IdealGas>{{5.0 / 3.0}}, terms...}};
     out = run_fixed_steps(scene, p, integrator, dt, steps);
   };
   sph::with_hydro_forms<D>(e.form, energy_form, e.lambda, [&](auto euler, auto energy) {
