@@ -67,17 +67,19 @@ inline std::size_t candidates(std::size_t s, const std::vector<Run<D>>& sten, co
   return static_cast<std::size_t>(out - begin);
 }
 
+// The counts own_reach writes.
+struct Found {
+  std::size_t listed, missed;
+};
+
 // With wide h: the candidates k of sorted particle s (particle i) within its own h_s, written to
 // out in stencil order, and the pairs the other end misses (h_k <= |r_sk| < h_s) as (k, i) to
 // miss, both without a branch. Not inlined: inside the search's loop GCC 12 spilled `kept` as a
 // byte and reloaded it as a word, a failed store forwarding per candidate that made the search
 // with a few wide particles 1.9x slower (measured, N = 125,000).
-struct Found {
-  std::size_t listed, missed;
-};
 template <int D>
-[[gnu::noinline]] Found own_reach(std::size_t s, int i, const std::vector<Run<D>>& sten, const Sorted<D>& v, int* out,
-                       std::array<int, 2>* miss) {
+[[gnu::noinline]] Found own_reach(std::size_t s, int i, const std::vector<Run<D>>& sten, const Sorted<D>& v,
+                                  int* out, std::array<int, 2>* miss) {
   int* const out0 = out;
   std::array<int, 2>* const miss0 = miss;
   const double hi = v.h[s];
@@ -129,6 +131,17 @@ template <int D>
   return used;
 }
 #endif
+
+// candidates in the copy of the AVX2 and AVX-512 paths (avx2): in 3D the vectorised one.
+template <int D>
+inline std::size_t candidates_on([[maybe_unused]] bool avx2, std::size_t s, const std::vector<Run<D>>& sten,
+                                 const Sorted<D>& v, int* out) {
+#ifdef SPH_AVX2_COPY
+  if constexpr (D == 3)
+    if (avx2) return candidates_avx2(s, sten, v, out);
+#endif
+  return candidates(s, sten, v, out);
+}
 
 }  // namespace
 
@@ -252,7 +265,7 @@ template <int D>
   }
   Sorted<D> view{{}, hs.data(), sorted.data()};
   for (int d = 0; d < D; ++d) view.x[d] = xs[d].data();
-  const bool simd = D == 3 && avx2_loops(isa_path());
+  const bool avx2 = avx2_loops(isa_path());
 
   // The stencil of a cell as runs of consecutive cells along x (contiguous in the sorted
   // arrays), each with the image shift that brings it next to the cell.
@@ -341,15 +354,7 @@ template <int D>
           used += f.listed;
           nm += f.missed;
         } else {
-#ifdef SPH_AVX2_COPY
-          if constexpr (D == 3)
-            if (simd) {
-              used += candidates_avx2(s, sten, view, js.data() + used);
-              nl.offset[i + 1] = used - local[i];
-              continue;
-            }
-#endif
-          used += candidates(s, sten, view, js.data() + used);
+          used += candidates_on(avx2, s, sten, view, js.data() + used);
         }
         nl.offset[i + 1] = used - local[i];
       }
