@@ -7,7 +7,9 @@
 namespace sph {
 
 // Instruction-set path of the pair loops (hydro/pairs.hpp) and the tree gravity walk
-// (gravity/tree_gravity.cpp). The loops of 2D and 3D scenes and the walk are compiled twice, for
+// (gravity/tree_gravity.cpp); the neighbour search's candidate test and the reused lists' filter
+// (search/grid_search.cpp, search/verlet_list.cpp) have copies of their own, which list the same
+// pairs on every path. The loops of 2D and 3D scenes and the walk are compiled twice, for
 // the portable default and for x86-64 with AVX2 and FMA; the loops of 3D scenes and the walk also
 // a third time, for AVX-512 in 512-bit vectors (path avx512: 2D loops as avx2). The path is chosen
 // once at run time: the fastest the CPU supports, or the one the environment variable SPHV_ISA

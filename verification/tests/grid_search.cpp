@@ -53,10 +53,10 @@ void compare(std::size_t n, bool periodic, double hmin, double hmax, unsigned se
 
 }  // namespace
 
-// On every instruction-set path this CPU has (the 3D candidate loop has an AVX2 copy).
+// On every instruction-set path this CPU has (the 3D candidate loop has AVX2 and AVX-512 copies).
 TEST_CASE("grid search equals brute force", "[neighbours]") {
   const sph::IsaPath chosen = sph::isa_path();
-  for (sph::IsaPath path : {sph::IsaPath::portable, sph::IsaPath::avx2}) {
+  for (sph::IsaPath path : {sph::IsaPath::portable, sph::IsaPath::avx2, sph::IsaPath::avx512}) {
     if (!sph::isa_supported(path)) continue;
     sph::set_isa_path(path);
     for (bool periodic : {true, false}) {
@@ -93,11 +93,14 @@ TEST_CASE("grid search lists the same pairs on every instruction-set path", "[ne
       const sph::Box<3> box = sph::unit_box<3>(periodic);
       sph::set_isa_path(sph::IsaPath::portable);
       const auto portable = sph::grid_search<3>(x, h, box);
-      sph::set_isa_path(sph::IsaPath::avx2);
-      const auto avx2 = sph::grid_search<3>(x, h, box);
-      REQUIRE(avx2.offset == portable.offset);
-      REQUIRE(avx2.j == portable.j);
-      REQUIRE(avx2.order == portable.order);
+      for (sph::IsaPath path : {sph::IsaPath::avx2, sph::IsaPath::avx512}) {
+        if (!sph::isa_supported(path)) continue;
+        sph::set_isa_path(path);
+        const auto other = sph::grid_search<3>(x, h, box);
+        REQUIRE(other.offset == portable.offset);
+        REQUIRE(other.j == portable.j);
+        REQUIRE(other.order == portable.order);
+      }
     }
   }
   sph::set_isa_path(chosen);
@@ -154,10 +157,11 @@ void verlet_steps(std::size_t n, bool periodic, double h0, double speed, double 
 
 // sph/search/verlet_list.hpp's reuse conditions (a) (each particle within half its skin) and
 // (b) (2 d_max and h's growth within the skin) against a brute-force search at every step, on
-// every instruction-set path this CPU has (the pair filter has a copy of its own for each).
+// every instruction-set path this CPU has (the pair filter has a portable and an AVX2 copy, the
+// search's candidate test an AVX-512 one too).
 TEST_CASE("reused neighbour lists hold every pair of a brute-force search", "[neighbours]") {
   const sph::IsaPath chosen = sph::isa_path();
-  for (sph::IsaPath path : {sph::IsaPath::portable, sph::IsaPath::avx2}) {
+  for (sph::IsaPath path : {sph::IsaPath::portable, sph::IsaPath::avx2, sph::IsaPath::avx512}) {
     if (!sph::isa_supported(path)) continue;
     sph::set_isa_path(path);
     for (bool periodic : {true, false}) {
