@@ -87,6 +87,13 @@ std::vector<Row> measure(long n_wanted, int threads, const BenchOptions& o, doub
   rows.push_back({"hydro forces", n, threads, hydro.forces, hydro.pairs});
   rows.push_back({"full hydro step", n, threads, hydro.step, hydro.pairs});
   rows.push_back({"full hydro step, search every step", n, threads, hydro.step_fresh_search, hydro.pairs});
+  if (n <= o.shuffled_max) {  // particles stored in no spatial order, as another code's snapshot may hold them
+    const sph::Particles<3> q = shuffled(p);
+    rows.push_back({"full hydro step, stored shuffled", n, threads, time_evolve_step(q, box, best_time).first,
+                    hydro.pairs});
+    rows.push_back({"full hydro step, stored shuffled, no reordering", n, threads,
+                    time_evolve_step(q, box, best_time, 0).first, hydro.pairs});
+  }
   searches_per_step = hydro.searches_per_step;
   bytes_per_particle = hydro.bytes_per_particle;
   if (n <= o.tree_max) {
@@ -125,14 +132,14 @@ void bench(const BenchOptions& o) {
   auto of_peak = [&](const Row& r) {
     return r.stage == "hydro forces" ? force_pair_flops * r.pairs / r.seconds / peak[r.threads].flops_per_s : NAN;
   };
-  std::printf("%-38s %9s %7s %10s %14s %14s %9s %8s\n", "stage", "N", "threads", "seconds", "updates/s", "pairs/s",
+  std::printf("%-48s %9s %7s %10s %14s %14s %9s %8s\n", "stage", "N", "threads", "seconds", "updates/s", "pairs/s",
               "ns/pair", "of peak");
   for (int threads : o.threads)
     for (long n : o.sizes) {
       double b = 0.0, searches = 0.0;
       for (const Row& r : measure(n, threads, o, b, searches)) {
         rows.push_back(r);
-        std::printf("%-38s %9ld %7d %10.4f %14.3e %14.3e %9.2f", r.stage.c_str(), r.n, r.threads, r.seconds,
+        std::printf("%-48s %9ld %7d %10.4f %14.3e %14.3e %9.2f", r.stage.c_str(), r.n, r.threads, r.seconds,
                     r.n / r.seconds, r.pairs / r.seconds, r.pairs > 0.0 ? 1e9 * r.seconds / r.pairs : 0.0);
         if (std::isfinite(of_peak(r))) std::printf(" %7.1f%%", 100.0 * of_peak(r));
         std::printf("\n");

@@ -11,6 +11,7 @@ struct BenchOptions {
   std::vector<long> sizes = {10000, 30000, 100000, 300000, 1000000};
   std::vector<int> threads;  // empty: 1 and all cores
   long tree_max = 400000, direct_max = 30000;  // the default sizes 3e5 (300763) included for the tree
+  long shuffled_max = 100000;  // the step from shuffled storage, not reordered, is 3-4x slower
   std::filesystem::path out = "runs/bench";
 };
 void bench_command(BenchOptions o);

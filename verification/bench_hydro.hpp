@@ -2,11 +2,15 @@
 // The hydro part of `sphv bench`: the force loop of the Sod scene's matched pair (26)/(42)
 // with artificial viscosity, and a full kick-drift-kick step: `evolve`'s own (Courant step,
 // neighbour lists reused while they cover, sph/hydro/evolve.hpp), and with a fresh search every
-// step.
+// step; and evolve's step from the particles stored in a random order, with and without its
+// reordering of them (sph/hydro/storage_order.hpp).
 #include <algorithm>
 #include <functional>
+#include <numeric>
 #include <random>
 #include <stdexcept>
+#include <tuple>
+#include <utility>
 
 #include "sph/core/verdict.hpp"
 #include "sph/density/terms.hpp"
@@ -36,44 +40,28 @@ struct HydroTimes {
   double forces, step, step_fresh_search, pairs, bytes_per_particle, searches_per_step;
 };
 
-inline HydroTimes time_hydro_step(sph::Particles<3>& p, const sph::Box<3>& box,
-                                  const std::function<double(const std::function<void()>&)>& timer) {
+// The scene of the full step: summation density (27), the forces' terms.
+using StepScene = sph::Scene<3, sph::SummationDensity<3>, sph::EquationOfState<3, sph::IdealGas>,
+                             sph::EulerSymmetric<3, sph::Lambda2>, sph::EnergySymmetric<3, sph::Lambda2>,
+                             sph::ArtificialViscosity<3>>;
+
+// A step as evolve takes it (sph/hydro/evolve.hpp: Courant step, lists reused while they cover, the
+// particles stored in the search's cell order, the verdict's check), from the state p with its
+// density: evolve itself, run for 1 and for 1 + full_step_window steps from the same state; the
+// difference over the window leaves out the start (first evaluation, search and reordering). The
+// window spans several reuses of a list: with 8 steps it held 3 searches at the skin of 0.1 (0.38 a
+// step, against 0.28 over 40 steps) and the step came out 8 % too slow (N = 125,000, one thread).
+// Both runs are timed alike, after an untimed run that pays the process's first touch of the
+// buffers (a cold first run took 1.03 s against 0.52 s warm at N = 125,000 on one thread, and made
+// the difference too small). Returns the step's time and the searches a step.
+inline std::pair<double, double> time_evolve_step(const sph::Particles<3>& p, const sph::Box<3>& box,
+                                                  const std::function<double(const std::function<void()>&)>& timer,
+                                                  long reorder_every = sph::HydroControls{}.reorder_every) {
   using namespace sph;
-  std::mt19937_64 rng(3);
-  std::normal_distribution<double> g(0.0, 0.1);
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    p.u[i] = 1.0;
-    p.v[i] = Vec<3>(g(rng), g(rng), g(rng));  // random motion: about half the pairs approach (viscosity on)
-  }
-  using Forces = Scene<3, EquationOfState<3, IdealGas>, EulerSymmetric<3, Lambda2>, EnergySymmetric<3, Lambda2>,
-                       ArtificialViscosity<3>>;
-  using Step = Scene<3, SummationDensity<3>, EquationOfState<3, IdealGas>, EulerSymmetric<3, Lambda2>,
-                     EnergySymmetric<3, Lambda2>, ArtificialViscosity<3>>;
-  NeighbourList nl = grid_search<3>(p.x, p.h, box);
-  density_summation<3>(p, nl, box);
-  Derivatives<3> d, at_t;
-  Forces forces;
-  HydroTimes t{};
-  t.pairs = static_cast<double>(nl.pairs());
-  t.forces = timer([&] { forces.derivatives(p, Neighbourhood<3>{nl, box}, d); });
-  Step step;
-  GridSearchBuffers<3> buffers;  // kept, as evolve's lists keep theirs: fresh ones fault pages in every step
-  auto derivs = [&](Particles<3>& q, Derivatives<3>& dd) {
-    grid_search<3>(q.x, q.h, box, nl, buffers);
-    step.derivatives(q, Neighbourhood<3>{nl, box}, dd);
-  };
-  derivs(p, d);
-  t.step_fresh_search = timer([&] { kdk_leapfrog_step(p, d, at_t, 1e-4, derivs); });
-  // A step as evolve takes it (sph/hydro/evolve.hpp: Courant step, lists reused while they cover,
-  // the verdict's check): evolve itself, run for 1 and for 1 + full_step_window steps from the same state;
-  // the difference over the window leaves out the start (first evaluation and search). The window spans
-  // several reuses of a list: with 8 steps it held 3 searches at the skin of 0.1 (0.38 a step, against
-  // 0.28 over 40 steps) and the step came out 8 % too slow (N = 125,000, one thread). Both runs are
-  // timed alike, after an untimed run that pays the process's first touch of the buffers (a cold
-  // first run took 1.03 s against 0.52 s warm at N = 125,000 on one thread, and made the difference
-  // too small).
+  StepScene step;
   HydroControls run;
   run.t_end = 1e30;  // ended by the step budget
+  run.reorder_every = reorder_every;
   auto evolve_for = [&](long steps) {  // returns the searches made
     run.max_steps = steps;
     Particles<3> q = p;
@@ -91,8 +79,50 @@ inline HydroTimes time_hydro_step(sph::Particles<3>& p, const sph::Box<3>& box,
   long one = 0, more = 0;  // searches: the same in every repetition
   const double t_one = timer([&] { one = evolve_for(1); });
   const double t_more = timer([&] { more = evolve_for(1 + full_step_window); });
-  t.step = (t_more - t_one) / full_step_window;
-  t.searches_per_step = static_cast<double>(more - one) / full_step_window;
+  return {(t_more - t_one) / full_step_window, static_cast<double>(more - one) / full_step_window};
+}
+
+// The particles of p stored in a random order, as a snapshot of another code may hold them.
+inline sph::Particles<3> shuffled(const sph::Particles<3>& p) {
+  std::vector<std::size_t> at(p.size());
+  std::iota(at.begin(), at.end(), 0);
+  std::shuffle(at.begin(), at.end(), std::mt19937_64(11));
+  sph::Particles<3> q = p;
+  for (std::size_t k = 0; k < p.size(); ++k) {
+    const std::size_t i = at[k];
+    q.x[k] = p.x[i], q.v[k] = p.v[i], q.m[k] = p.m[i], q.rho[k] = p.rho[i];
+    q.p[k] = p.p[i], q.c[k] = p.c[i], q.u[k] = p.u[i], q.h[k] = p.h[i];
+  }
+  return q;
+}
+
+inline HydroTimes time_hydro_step(sph::Particles<3>& p, const sph::Box<3>& box,
+                                  const std::function<double(const std::function<void()>&)>& timer) {
+  using namespace sph;
+  std::mt19937_64 rng(3);
+  std::normal_distribution<double> g(0.0, 0.1);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    p.u[i] = 1.0;
+    p.v[i] = Vec<3>(g(rng), g(rng), g(rng));  // random motion: about half the pairs approach (viscosity on)
+  }
+  using Forces = Scene<3, EquationOfState<3, IdealGas>, EulerSymmetric<3, Lambda2>, EnergySymmetric<3, Lambda2>,
+                       ArtificialViscosity<3>>;
+  NeighbourList nl = grid_search<3>(p.x, p.h, box);
+  density_summation<3>(p, nl, box);
+  Derivatives<3> d, at_t;
+  Forces forces;
+  HydroTimes t{};
+  t.pairs = static_cast<double>(nl.pairs());
+  t.forces = timer([&] { forces.derivatives(p, Neighbourhood<3>{nl, box}, d); });
+  StepScene step;
+  GridSearchBuffers<3> buffers;  // kept, as evolve's lists keep theirs: fresh ones fault pages in every step
+  auto derivs = [&](Particles<3>& q, Derivatives<3>& dd) {
+    grid_search<3>(q.x, q.h, box, nl, buffers);
+    step.derivatives(q, Neighbourhood<3>{nl, box}, dd);
+  };
+  derivs(p, d);
+  t.step_fresh_search = timer([&] { kdk_leapfrog_step(p, d, at_t, 1e-4, derivs); });
+  std::tie(t.step, t.searches_per_step) = time_evolve_step(p, box, timer);
   // Particle state (x, v: 6 doubles; m, rho, p, c, u, h: 6), derivatives (dv/dt: 3; du/dt,
   // drho/dt, dh/dt, mu_max: 4) and the KDK step's scratch of them, neighbour list (one int per pair,
   // an offset and a place in the visiting order per particle).

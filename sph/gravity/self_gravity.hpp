@@ -16,6 +16,7 @@ namespace sph {
 // gravitational energy W = 1/2 sum_i m_i phi_i enters the total energy. A scene that does not
 // list this term builds no tree.
 struct SelfGravity {
+  static constexpr bool keeps_particle_arrays = true;  // phi, read in the caller's order (hydro/storage_order.hpp)
   GravityOptions options;
   std::vector<double> phi;  // phi_i of the last evaluation (particles' current positions)
 

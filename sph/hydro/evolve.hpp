@@ -7,6 +7,7 @@
 #include <type_traits>
 
 #include "sph/core/verdict.hpp"
+#include "sph/hydro/storage_order.hpp"
 #include "sph/hydro/viscosity.hpp"
 #include "sph/search/verlet_list.hpp"
 #include "sph/time/leapfrog.hpp"
@@ -31,6 +32,17 @@ struct HydroControls {
   // (0.28 searches a step), 0.1198 s with 0.15, 0.1163 s with 0.2 (0.12), 0.1129 s with 0.3 (0.07)
   // and 0.1158 s with 0.4: 0.3 pads 2.2x the pairs of an unpadded list for little more.
   double skin = 0.2;
+  // The particles stored in the search's cell order (hydro/storage_order.hpp) at the first search,
+  // then at the first search this many steps after the last reordering (0: never). A reordering
+  // costs about a quarter of a step (0.15-0.25 s at N = 1e6 on one thread, mostly renumbering the
+  // lists' 1e8 entries; measured): at every search (one in 8 steps) that would be 3 % of a run of a
+  // lattice, which gains nothing from it; every 64 steps, 0.4 %. Only in a run without hooks, or
+  // with hooks that are index_free (others may address particles by index), of a scene that keeps
+  // no arrays over the particles. The
+  // particles are returned in the caller's order; the renumbered lists hold the same pairs in the
+  // same order, so the results are the same until the next search, whose lists may order a
+  // particle's neighbours otherwise (a change at round-off).
+  long reorder_every = 64;
 };
 
 struct HydroOutcome {
@@ -38,6 +50,7 @@ struct HydroOutcome {
   double t = 0.0;
   std::string verdict = "ok";
   long searches = 0;  // neighbour searches made (the lists serve while they cover, search/verlet_list.hpp)
+  long reorders = 0;  // times the particles were stored anew in the search's cell order (HydroControls)
 };
 
 // Total mass, momentum and energy sum_i m_i (v_i^2 / 2 + u_i) of particles [first, last), and
@@ -66,11 +79,15 @@ Totals<D> totals(const Particles<D>& p, const Derivatives<D>& d, std::size_t fir
 // Optional hooks of a run: `constrain` imposes prescribed particles (e.g. boundary layers
 // held at a known state) after every step; `evaluated` sees every derivative evaluation with
 // the state it belongs to; `stepped` sees the state after every step (step count, time).
+// index_free: the hooks treat every particle alike, whatever its index (sums over all of them,
+// (50) iterated for all), so evolve may store the particles in its own order
+// (HydroControls::reorder_every), in which the hooks then see them.
 template <int D>
 struct HydroHooks {
   std::function<void(Particles<D>&, double)> constrain;
   std::function<void(const Particles<D>&, const Derivatives<D>&)> evaluated;
   std::function<void(const Particles<D>&, const Derivatives<D>&, long, double)> stepped;
+  bool index_free = false;
 };
 
 // The rates of a scene at a state with its neighbourhood: all that evolve needs of a scene.
@@ -79,20 +96,31 @@ using SceneRates = std::function<void(Particles<D>&, const Neighbourhood<D>&, De
 
 // evolve's loop, behind SceneRates: compiled once per dimension, not once per scene type (a case
 // choosing among 72 scenes would otherwise compile 72 copies of the integrators and this loop).
-// visc (may be null) sets the viscous signal speed of the Courant step.
+// visc (may be null) sets the viscous signal speed of the Courant step; reorderable: the scene keeps
+// no arrays over the particles (HydroControls::reorder_every).
 template <int D>
 HydroOutcome evolve_rates(const SceneRates<D>& rates, const ArtificialViscosity<D>* visc, Particles<D>& p,
-                          const Box<D>& box, const HydroControls& c, const HydroHooks<D>& hooks) {
+                          const Box<D>& box, const HydroControls& c, const HydroHooks<D>& hooks, bool reorderable) {
   Derivatives<D> d, at_t;  // at_t: the KDK step's scratch
   HydroOutcome out;
   VerletList<D> lists(c.skin);
+  StorageOrder<D> storage;
+  const bool reorder = c.reorder_every > 0 && reorderable &&
+                       (hooks.index_free || (!hooks.constrain && !hooks.evaluated && !hooks.stepped));
+  long reordered_at = 0, searched = 0;  // the step of the last reordering, and the searches made by then
   auto derivs = [&](Particles<D>& q, Derivatives<D>& dd) {
     rates(q, Neighbourhood<D>{lists.update(q.x, q.h, box), box}, dd);
     if (hooks.evaluated) hooks.evaluated(q, dd);
   };
   auto ended = [&] {
     out.searches = lists.searches();
+    storage.restore(p);
     return out;
+  };
+  auto unstable = [&] {  // named by the caller's index: the lowest bad one
+    storage.restore(p);
+    out.verdict = unstable_verdict(out.steps, out.t, *first_bad(p));
+    return ended();
   };
   auto bad_state = [&](const std::string& what) {
     out.verdict = "unstable: step " + std::to_string(out.steps) + " (t = " + std::to_string(out.t) + "): " + what;
@@ -104,6 +132,10 @@ HydroOutcome evolve_rates(const SceneRates<D>& rates, const ArtificialViscosity<
     while (out.t < c.t_end) {
       if (out.steps >= c.max_steps)
         return bad_state("step budget of " + std::to_string(c.max_steps) + " steps exhausted before t_end");
+      if (reorder && lists.searches() > searched && (searched == 0 || out.steps - reordered_at >= c.reorder_every)) {
+        storage.apply(lists.renumber_in_visiting_order(), p, d);
+        reordered_at = out.steps, searched = lists.searches(), ++out.reorders;
+      }
       double dt = c.step.criterion == TimeStepCriterion::courant
                       ? courant_time_step(p, d, visc ? visc->alpha : 0.0, visc ? visc->beta : 0.0, c.step)
                       : chapter_time_step(p, c.step);
@@ -114,10 +146,7 @@ HydroOutcome evolve_rates(const SceneRates<D>& rates, const ArtificialViscosity<
       ++out.steps;
       out.t = (c.t_end - out.t <= dt) ? c.t_end : out.t + dt;
       if (hooks.constrain) hooks.constrain(p, out.t);
-      if (auto b = first_bad(p)) {
-        out.verdict = unstable_verdict(out.steps, out.t, *b);
-        return ended();
-      }
+      if (first_bad(p)) return unstable();
       if (hooks.stepped) hooks.stepped(p, d, out.steps, out.t);
     }
   } catch (const std::invalid_argument& e) {  // e.g. a support radius grown beyond a periodic box
@@ -135,7 +164,7 @@ HydroOutcome evolve(Scene<D, Terms...>& scene, Particles<D>& p, const Box<D>& bo
   if constexpr ((std::is_same_v<Terms, ArtificialViscosity<D>> || ...))
     visc = &scene.template term<ArtificialViscosity<D>>();
   auto rates = [&](Particles<D>& q, const Neighbourhood<D>& nb, Derivatives<D>& d) { scene.derivatives(q, nb, d); };
-  return evolve_rates<D>(rates, visc, p, box, c, hooks);
+  return evolve_rates<D>(rates, visc, p, box, c, hooks, !(keeps_particle_arrays<Terms> || ...));
 }
 
 }  // namespace sph

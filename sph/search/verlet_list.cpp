@@ -45,11 +45,12 @@ inline std::size_t pairs_within(std::size_t i, const int* cj, std::size_t count,
 }
 
 template <int D, class Within>
-inline std::size_t select_range(std::size_t first, std::size_t last, const NeighbourList& list, int* js,
-                                std::size_t* offset, Within&& within) {
+inline std::size_t select_range(std::size_t first, std::size_t last, const NeighbourList& list, const int* row,
+                                int* js, std::size_t* offset, Within&& within) {
   std::size_t used = 0;
   for (std::size_t i = first; i < last; ++i) {
-    used += within(i, list.j.data() + list.offset[i], list.offset[i + 1] - list.offset[i], js + used);
+    const std::size_t r = row ? static_cast<std::size_t>(row[i]) : i;
+    used += within(i, list.j.data() + list.offset[r], list.offset[r + 1] - list.offset[r], js + used);
     offset[i + 1] = used;
   }
   return used;
@@ -97,10 +98,11 @@ inline std::size_t select_range(std::size_t first, std::size_t last, const Neigh
 
 template <int D>
 [[gnu::target("avx2,fma"), gnu::flatten]] std::size_t select_range_avx2(std::size_t first, std::size_t last,
-                                                                       const NeighbourList& list, const Site* s,
-                                                                       const Vec<D>& L, const Vec<D>& wrap, int* js,
-                                                                       std::size_t* offset) {
-  return select_range<D>(first, last, list, js, offset, [&](std::size_t i, const int* cj, std::size_t n, int* out) {
+                                                                       const NeighbourList& list, const int* row,
+                                                                       const Site* s, const Vec<D>& L,
+                                                                       const Vec<D>& wrap, int* js, std::size_t* offset) {
+  return select_range<D>(first, last, list, row, js, offset, [&](std::size_t i, const int* cj, std::size_t n,
+                                                                 int* out) {
     if constexpr (D == 3) return pairs_within_avx2(i, cj, n, s, L, wrap, out);
     else return pairs_within<D>(i, cj, n, s, L, wrap, out);
   });
@@ -111,21 +113,23 @@ template <int D>
 
 template <int D>
 std::size_t select_pairs([[maybe_unused]] bool avx2, std::size_t first, std::size_t last, const NeighbourList& list,
-                         const Site* sites, const Vec<D>& L, const Vec<D>& wrap, int* js, std::size_t* offset) {
+                         const int* row, const Site* sites, const Vec<D>& L, const Vec<D>& wrap, int* js,
+                         std::size_t* offset) {
 #ifdef SPH_AVX2_COPY
   if constexpr (D >= 2)  // 1D keeps the portable copy, as the pair loops (hydro/pairs.hpp)
-    if (avx2) return select_range_avx2<D>(first, last, list, sites, L, wrap, js, offset);
+    if (avx2) return select_range_avx2<D>(first, last, list, row, sites, L, wrap, js, offset);
 #endif
-  return select_range<D>(first, last, list, js, offset, [&](std::size_t i, const int* cj, std::size_t n, int* out) {
+  return select_range<D>(first, last, list, row, js, offset, [&](std::size_t i, const int* cj, std::size_t n,
+                                                                 int* out) {
     return pairs_within<D>(i, cj, n, sites, L, wrap, out);
   });
 }
 
-template std::size_t select_pairs<1>(bool, std::size_t, std::size_t, const NeighbourList&, const Site*, const Vec<1>&,
-                                     const Vec<1>&, int*, std::size_t*);
-template std::size_t select_pairs<2>(bool, std::size_t, std::size_t, const NeighbourList&, const Site*, const Vec<2>&,
-                                     const Vec<2>&, int*, std::size_t*);
-template std::size_t select_pairs<3>(bool, std::size_t, std::size_t, const NeighbourList&, const Site*, const Vec<3>&,
-                                     const Vec<3>&, int*, std::size_t*);
+template std::size_t select_pairs<1>(bool, std::size_t, std::size_t, const NeighbourList&, const int*, const Site*,
+                                     const Vec<1>&, const Vec<1>&, int*, std::size_t*);
+template std::size_t select_pairs<2>(bool, std::size_t, std::size_t, const NeighbourList&, const int*, const Site*,
+                                     const Vec<2>&, const Vec<2>&, int*, std::size_t*);
+template std::size_t select_pairs<3>(bool, std::size_t, std::size_t, const NeighbourList&, const int*, const Site*,
+                                     const Vec<3>&, const Vec<3>&, int*, std::size_t*);
 
 }  // namespace sph

@@ -20,18 +20,19 @@ struct alignas(32) Site {
   double h;
 };
 
-// For i = first .. last-1: the pairs (i, j) of list with |r_ij| < max(h_i, h_j), appended to js
-// in the list's order, with offset[i + 1] = the count so far; returns the count. Compiled in
-// search/verlet_list.cpp in two copies like the pair loops (core/isa.hpp): portable, and AVX2 + FMA.
+// For i = first .. last-1: the pairs (i, j) of list's row r = row[i] (r = i where row is null)
+// with |r_ij| < max(h_i, h_j), appended to js in the row's order, with offset[i + 1] = the count so
+// far; returns the count. Compiled in search/verlet_list.cpp in two copies like the pair loops
+// (core/isa.hpp): portable, and AVX2 + FMA.
 template <int D>
-std::size_t select_pairs(bool avx2, std::size_t first, std::size_t last, const NeighbourList& list,
+std::size_t select_pairs(bool avx2, std::size_t first, std::size_t last, const NeighbourList& list, const int* row,
                          const Site* sites, const Vec<D>& L, const Vec<D>& wrap, int* js, std::size_t* offset);
-extern template std::size_t select_pairs<1>(bool, std::size_t, std::size_t, const NeighbourList&, const Site*,
-                                            const Vec<1>&, const Vec<1>&, int*, std::size_t*);
-extern template std::size_t select_pairs<2>(bool, std::size_t, std::size_t, const NeighbourList&, const Site*,
-                                            const Vec<2>&, const Vec<2>&, int*, std::size_t*);
-extern template std::size_t select_pairs<3>(bool, std::size_t, std::size_t, const NeighbourList&, const Site*,
-                                            const Vec<3>&, const Vec<3>&, int*, std::size_t*);
+extern template std::size_t select_pairs<1>(bool, std::size_t, std::size_t, const NeighbourList&, const int*,
+                                            const Site*, const Vec<1>&, const Vec<1>&, int*, std::size_t*);
+extern template std::size_t select_pairs<2>(bool, std::size_t, std::size_t, const NeighbourList&, const int*,
+                                            const Site*, const Vec<2>&, const Vec<2>&, int*, std::size_t*);
+extern template std::size_t select_pairs<3>(bool, std::size_t, std::size_t, const NeighbourList&, const int*,
+                                            const Site*, const Vec<3>&, const Vec<3>&, int*, std::size_t*);
 
 // Neighbour lists reused across steps (a Verlet list: 9.4.3's search with a skin). A search at
 // positions x0 and support radii h0 lists the pairs within the padded radii (1 + skin) h0, and
@@ -62,6 +63,30 @@ class VerletList {
   }
   long searches() const { return searches_; }
 
+  // For a caller that stores its particles in the visiting order of the last search (evolve, see
+  // hydro/storage_order.hpp): returns that order and renumbers the lists so that particle order[k]
+  // becomes k. They are then the lists a search of the particles so stored would give (the same
+  // pairs, in the same order). Empty if there was no search since the last renumbering.
+  std::vector<int> renumber_in_visiting_order() {
+    std::vector<int> order;
+    order.swap(list_.order);  // the visiting order is now the storage order
+    const std::size_t n = order.size();
+    if (n == 0) return order;
+    std::vector<int> now(n);  // now[i]: the new number of particle i
+#pragma omp parallel for if (n >= parallel_threshold)
+    for (std::size_t k = 0; k < n; ++k) now[order[k]] = static_cast<int>(k);
+    const std::size_t m = list_.j.size();
+#pragma omp parallel for if (n >= parallel_threshold)
+    for (std::size_t t = 0; t < m; ++t) list_.j[t] = now[list_.j[t]];
+    row_ = order;  // the rows stay where they are: k's is order[k]'s
+    std::vector<Vec<D>> x0(n);
+    std::vector<double> h0(n);
+#pragma omp parallel for if (n >= parallel_threshold)
+    for (std::size_t k = 0; k < n; ++k) x0[k] = x0_[order[k]], h0[k] = h0_[order[k]];
+    x0_.swap(x0), h0_.swap(h0);
+    return order;
+  }
+
  private:
   bool covers(const std::vector<Vec<D>>& x, const std::vector<double>& h, const Box<D>& box) const {
     if (searches_ == 0 || x.size() != x0_.size() || box.lo != box_.lo || box.hi != box_.hi || box.periodic != box_.periodic) return false;
@@ -90,6 +115,7 @@ class VerletList {
     reach_.resize(h.size());
     for (std::size_t k = 0; k < h.size(); ++k) reach_[k] = (1.0 + used_skin_) * h[k];
     grid_search<D>(x, reach_, box, list_, buffers_);
+    row_.clear();
     x0_ = x, h0_ = h, box_ = box;
     ++searches_;
   }
@@ -126,7 +152,8 @@ class VerletList {
       const std::size_t bound = list_.offset[last] - list_.offset[first];
       auto& js = t == 0 ? active_.j : parts_[t];
       if (js.size() < bound) js.resize(bound);
-      const std::size_t used = select_pairs<D>(avx2_loops(isa_path()), first, last, list_, sites_.data(), L, wrap,
+      const std::size_t used = select_pairs<D>(avx2_loops(isa_path()), first, last, list_,
+                                               row_.empty() ? nullptr : row_.data(), sites_.data(), L, wrap,
                                                js.data(), active_.offset.data());
       base[t + 1] = used;
 #pragma omp barrier
@@ -141,6 +168,7 @@ class VerletList {
 
   double skin_, used_skin_ = 0.0;
   NeighbourList list_, active_;
+  std::vector<int> row_;  // particle k's row of list_ (empty: row k), set by renumber_in_visiting_order
   std::vector<std::vector<int, DefaultInitAllocator<int>>> parts_;  // select's buffers, threads 1, 2, ...
   std::vector<Site, DefaultInitAllocator<Site>> sites_;  // the positions and radii select reads
   GridSearchBuffers<D> buffers_;          // the search's, kept likewise
