@@ -103,6 +103,18 @@ TEST_CASE("evolve reorders the particles' storage and returns them in the caller
     CHECK(hooked.out.reorders == 0);
     CHECK(seen.back() == kept.p.x[7]);
   }
+  SECTION("with hooks that treat every particle alike, which then see them in storage order") {
+    sph::HydroHooks<3> hooks;
+    hooks.index_free = true;
+    double mass = 0.0;
+    hooks.stepped = [&](const sph::Particles<3>& q, const sph::Derivatives<3>&, long, double) {
+      mass = std::accumulate(q.m.begin(), q.m.end(), 0.0);
+    };
+    const Run hooked = run(p, controls(4, 64), hooks), kept = run(p, controls(4, 0));
+    CHECK(hooked.out.reorders == 1);
+    CHECK(largest_difference(kept.p, hooked.p) == 0.0);
+    CHECK(std::abs(mass - std::accumulate(p.m.begin(), p.m.end(), 0.0)) <= 1e-12 * mass);
+  }
 }
 
 TEST_CASE("a run gone bad after a reordering names the caller's particle", "[hydro][reorder]") {
