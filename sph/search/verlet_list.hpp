@@ -149,7 +149,10 @@ class VerletList {
       const std::size_t first = n * t / nt, last = n * (t + 1) / nt;
       // Thread 0's pairs open the joined list: it filters straight into it, the others into
       // their buffers (the copy of them all cost 1.8 % of evolve's step on one thread).
-      const std::size_t bound = list_.offset[last] - list_.offset[first];
+      std::size_t bound = 0;  // the candidates of the range: its rows' lengths
+      if (row_.empty()) bound = list_.offset[last] - list_.offset[first];
+      else
+        for (std::size_t k = first; k < last; ++k) bound += list_.offset[row_[k] + 1] - list_.offset[row_[k]];
       auto& js = t == 0 ? active_.j : parts_[t];
       if (js.size() < bound) js.resize(bound);
       const std::size_t used = select_pairs<D>(avx2_loops(isa_path()), first, last, list_,

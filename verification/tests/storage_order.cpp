@@ -3,6 +3,7 @@
 // verdict naming the caller's particle, and no reordering where hooks or a scene's arrays need the
 // caller's order.
 #include <catch2/catch.hpp>
+#include <omp.h>
 
 #include <algorithm>
 #include <cmath>
@@ -94,6 +95,21 @@ TEST_CASE("evolve reorders the particles' storage and returns them in the caller
     INFO("searches " << reordered.out.searches << ", t " << reordered.out.t);
     CHECK(largest_difference(kept.p, reordered.p) <= 1e-13);
     CHECK(std::abs(reordered.out.t - kept.out.t) <= 1e-13 * kept.out.t);
+  }
+  SECTION("the same on one thread and on three, every loop forked") {
+    // Three threads split the renumbered rows into ranges none of which is a contiguous run of
+    // rows: each range's filter buffer must hold its own rows' candidates.
+    const std::size_t threshold = sph::parallel_threshold;
+    const int threads = omp_get_max_threads();
+    sph::parallel_threshold = 0;
+    omp_set_num_threads(1);
+    const Run one = run(p, controls(40, 1));
+    omp_set_num_threads(3);
+    const Run three = run(p, controls(40, 1));
+    omp_set_num_threads(threads);
+    sph::parallel_threshold = threshold;
+    CHECK(three.out.reorders == one.out.reorders);
+    CHECK(largest_difference(one.p, three.p) == 0.0);
   }
   SECTION("not with hooks, which may address particles by their index") {
     sph::HydroHooks<3> hooks;
