@@ -3,6 +3,7 @@
 // the new entries unset instead of writing zeros. For arrays every entry of which is written
 // right after the resize (neighbour lists, position columns): at N = 125,000 the zeros of the
 // lists were a 31 MB memset, on one thread, per search and per pair selection.
+#include <cstddef>
 #include <memory>
 #include <new>
 #include <utility>
@@ -28,5 +29,18 @@ struct DefaultInitAllocator : std::allocator<T> {
     ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
   }
 };
+
+// v resized to n entries that the caller then writes, every one. When v must grow, it moves to a
+// block an eighth larger than n, without copying its entries: a neighbour list a few pairs longer
+// than at the last search then stays where it is, instead of moving to fresh pages that the kernel
+// faults in and zeroes.
+template <class V>
+void resize_for_overwrite(V& v, std::size_t n) {
+  if (n > v.capacity()) {
+    v.clear();
+    v.reserve(n + n / 8);
+  }
+  v.resize(n);
+}
 
 }  // namespace sph

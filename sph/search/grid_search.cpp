@@ -405,7 +405,7 @@ template <int D>
     for (const auto& jm : missed[t]) ++extra[jm[0] + 1];
   for (std::size_t i = 0; i < n; ++i) extra[i + 1] += extra[i];
   for (std::size_t i = 0; i < n; ++i) nl.offset[i + 1] += nl.offset[i] + (extra[i + 1] - extra[i]);
-  nl.j.resize(nl.offset[n]);
+  resize_for_overwrite(nl.j, nl.offset[n]);
   {
     std::vector<std::size_t> fill(n);
     for (std::size_t i = 0; i < n; ++i) fill[i] = nl.offset[i + 1] - (extra[i + 1] - extra[i]);

@@ -154,7 +154,7 @@ class VerletList {
       else
         for (std::size_t k = first; k < last; ++k) bound += list_.offset[row_[k] + 1] - list_.offset[row_[k]];
       auto& js = t == 0 ? active_.j : parts_[t];
-      if (js.size() < bound) js.resize(bound);
+      if (js.size() < bound) resize_for_overwrite(js, bound);
       const std::size_t used = select_pairs<D>(avx2_loops(isa_path()), first, last, list_,
                                                row_.empty() ? nullptr : row_.data(), sites_.data(), L, wrap,
                                                js.data(), active_.offset.data());
