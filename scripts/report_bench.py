@@ -50,7 +50,9 @@ def bench_body(results, out):
                 ", ".join(f"N={k}: {v:.2f}" for k, v in b.get("searches_per_step", {}).items()) + ".</p>")
     if "full_step_window" in b:
         body.append(f"<p>Full hydro step: evolve's own (Courant step, neighbour lists reused while they cover), timed "
-                    f"over the {b['full_step_window']} steps after the first.</p>")
+                    f"over the {b['full_step_window']} steps after the first. \"Stored shuffled\": the same step from "
+                    f"the particles stored in a random order (as another code's snapshot may hold them), with evolve's "
+                    f"reordering of their storage along the search's cells, and without it.</p>")
     pk = b.get("peak")
     if pk:
         body.append(f"<p>Share of peak: the hydro forces at {pk['force_pair_flops']:.0f} floating-point operations a pair "
