@@ -38,10 +38,9 @@ struct HydroControls {
   // lists' 1e8 entries; measured): at every search (one in 8 steps) that would be 3 % of a run of a
   // lattice, which gains nothing from it; every 64 steps, 0.4 %. Only in a run without hooks, or
   // with hooks that are index_free (others may address particles by index), of a scene that keeps
-  // no arrays over the particles. The
-  // particles are returned in the caller's order; the renumbered lists hold the same pairs in the
-  // same order, so the results are the same until the next search, whose lists may order a
-  // particle's neighbours otherwise (a change at round-off).
+  // no arrays over the particles. The particles are returned in the caller's order; the renumbered
+  // lists hold the same pairs in the same order, so the results are the same until the next
+  // search, whose lists may order a particle's neighbours otherwise (a change at round-off).
   long reorder_every = 64;
 };
 
