@@ -87,6 +87,7 @@ struct HydroHooks {
   std::function<void(const Particles<D>&, const Derivatives<D>&)> evaluated;
   std::function<void(const Particles<D>&, const Derivatives<D>&, long, double)> stepped;
   bool index_free = false;
+  bool none() const { return !constrain && !evaluated && !stepped; }
 };
 
 // The rates of a scene at a state with its neighbourhood: all that evolve needs of a scene.
@@ -104,8 +105,7 @@ HydroOutcome evolve_rates(const SceneRates<D>& rates, const ArtificialViscosity<
   HydroOutcome out;
   VerletList<D> lists(c.skin);
   StorageOrder<D> storage;
-  const bool reorder = c.reorder_every > 0 && reorderable &&
-                       (hooks.index_free || (!hooks.constrain && !hooks.evaluated && !hooks.stepped));
+  const bool reorder = c.reorder_every > 0 && reorderable && (hooks.index_free || hooks.none());
   long reordered_at = 0, searched = 0;  // the step of the last reordering, and the searches made by then
   auto derivs = [&](Particles<D>& q, Derivatives<D>& dd) {
     rates(q, Neighbourhood<D>{lists.update(q.x, q.h, box), box}, dd);

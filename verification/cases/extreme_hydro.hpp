@@ -93,7 +93,7 @@ sph::HydroOutcome evolve_gas(sph::Particles<D>& p, const sph::Box<D>& box, const
   if (m.hmode == "iterate50") {
     // (50) iterated for every particle alike: the run may reorder them unless the caller's hooks
     // need its order.
-    if (!hooks.constrain && !hooks.evaluated && !hooks.stepped) hooks.index_free = true;
+    if (hooks.none()) hooks.index_free = true;
     auto user = hooks.constrain;
     auto lists = std::make_shared<sph::VerletList<D>>(hc.skin);  // reused from step to step
     hooks.constrain = [user, hc, &box, lists](sph::Particles<D>& q, double t) {
