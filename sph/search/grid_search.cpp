@@ -363,7 +363,7 @@ template <int D>
       if (parts.size() < team) parts.resize(team), missed.resize(team);
     }
     const std::size_t first = n * t / nt, last = n * (t + 1) / nt;
-    std::vector<int>& js = parts[t];
+    auto& js = parts[t];
     std::vector<std::array<int, 2>>& mt = missed[t];
     js.resize(std::max(js.size(), (last - first) * 64));
     std::size_t used = 0, nm = 0;

@@ -38,7 +38,7 @@ struct GridSearchBuffers {
   std::array<std::vector<double>, D> xs;  // positions in cell order, one array per dimension
   std::vector<double> hs;
   std::vector<std::size_t> local, extra;
-  std::vector<std::vector<int>> parts;                      // each thread's lists
+  std::vector<std::vector<int, DefaultInitAllocator<int>>> parts;  // each thread's lists
   std::vector<std::vector<std::array<int, 2>>> missed;      // each thread's pairs for the other end
 };
 
