@@ -33,12 +33,13 @@ def bench_body(results, out):
             body.append(f"<figure><a href='{e(png)}'><img src='{e(png)}' alt='{e(f['title'])}'></a>"
                         f"<figcaption>{e(f['title'])} (<a href='{e(pdf)}'>PDF</a>)</figcaption></figure>")
     body.append("</div><table><tr><th>stage</th><th>N</th><th>threads</th><th>seconds</th><th>particle updates/s</th>"
-                "<th>pair interactions/s</th><th>ns per pair</th><th>of measured peak</th></tr>")
+                "<th>pair interactions/s</th><th>ns per pair</th><th>speed-up over 1 thread</th><th>of measured peak</th></tr>")
     for r in b["rows"]:
         body.append(f"<tr><td>{e(r['stage'])}</td><td class='num'>{r['n']}</td><td class='num'>{r['threads']}</td>"
                     f"<td class='num'>{fmt(r['seconds'], '.4g')}</td><td class='num'>{fmt(r['particle_updates_per_s'], '.3e')}</td>"
                     f"<td class='num'>{fmt(r['pairs_per_s'], '.3e')}</td>"
                     f"<td class='num'>{fmt(r.get('ns_per_pair'), '.2f')}</td>"
+                    f"<td class='num'>{'' if r.get('speedup') is None else format(r['speedup'], '.2f') + 'x'}</td>"
                     f"<td class='num'>{pct(r.get('fraction_of_peak'))}</td></tr>")
     body.append("</table><p>Fitted cost slopes (time ~ N^slope): " +
                 ", ".join(f"{e(k)} {fmt(v, '.2f')}" for k, v in b["fitted_slopes"].items()) +
@@ -52,7 +53,8 @@ def bench_body(results, out):
         body.append(f"<p>Full hydro step: evolve's own (Courant step, neighbour lists reused while they cover), timed "
                     f"over the {b['full_step_window']} steps after the first. \"Stored shuffled\": the same step from "
                     f"the particles stored in a random order (as another code's snapshot may hold them), with evolve's "
-                    f"reordering of their storage along the search's cells, and without it.</p>")
+                    f"reordering of their storage along the search's cells, and without it. Speed-up: the stage's time on "
+                    f"one thread over its time on this many, each N measured on every thread count in turn.</p>")
     pk = b.get("peak")
     if pk:
         body.append(f"<p>Share of peak: the hydro forces at {pk['force_pair_flops']:.0f} floating-point operations a pair "

@@ -10,6 +10,8 @@
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <string>
+#include <utility>
 
 #include "reference/direct_sum.hpp"
 #include "sph/core/lattice.hpp"
@@ -132,23 +134,35 @@ void bench(const BenchOptions& o) {
   auto of_peak = [&](const Row& r) {
     return r.stage == "hydro forces" ? force_pair_flops * r.pairs / r.seconds / peak[r.threads].flops_per_s : NAN;
   };
-  std::printf("%-48s %9s %7s %10s %14s %14s %9s %8s\n", "stage", "N", "threads", "seconds", "updates/s", "pairs/s",
-              "ns/pair", "of peak");
-  for (int threads : o.threads)
-    for (long n : o.sizes) {
+  // A stage's time on one thread over its time on t threads, from the same N measured just before
+  // (NaN for one thread, or without a one-thread run).
+  std::map<std::pair<std::string, long>, double> one_thread;
+  auto speedup = [&](const Row& r) {
+    const auto one = one_thread.find({r.stage, r.n});
+    return r.threads == 1 || one == one_thread.end() ? NAN : one->second / r.seconds;
+  };
+  std::printf("%-48s %9s %7s %10s %14s %14s %9s %8s %8s\n", "stage", "N", "threads", "seconds", "updates/s", "pairs/s",
+              "ns/pair", "speed-up", "of peak");
+  // Each N on every thread count in turn: the speed-up compares runs minutes apart at most, not a
+  // whole pass (this machine's speed drifts by up to 1.5x over minutes).
+  for (long n : o.sizes)
+    for (int threads : o.threads) {
       double b = 0.0, searches = 0.0;
       for (const Row& r : measure(n, threads, o, b, searches)) {
         rows.push_back(r);
+        if (r.threads == 1) one_thread[{r.stage, r.n}] = r.seconds;
         std::printf("%-48s %9ld %7d %10.4f %14.3e %14.3e %9.2f", r.stage.c_str(), r.n, r.threads, r.seconds,
                     r.n / r.seconds, r.pairs / r.seconds, r.pairs > 0.0 ? 1e9 * r.seconds / r.pairs : 0.0);
+        if (std::isfinite(speedup(r))) std::printf(" %7.2fx", speedup(r));
+        else std::printf(" %8s", "");
         if (std::isfinite(of_peak(r))) std::printf(" %7.1f%%", 100.0 * of_peak(r));
         std::printf("\n");
         std::fflush(stdout);
       }
       bytes[rows.back().n] = b;
       searches_per_step[rows.back().n] = searches;
-      // Measured: the process's peak over a pass of ascending N is set by the largest N so far
-      // (the first thread count's pass only: later passes start at that peak).
+      // Measured: the process's peak over ascending N is set by the largest N so far (recorded after
+      // the first thread count's run of each N).
       if (threads == o.threads.front()) resident[rows.back().n] = peak_resident_bytes() / rows.back().n;
     }
 
@@ -185,6 +199,7 @@ void bench(const BenchOptions& o) {
     jr.push_back({{"stage", r.stage}, {"n", r.n}, {"threads", r.threads}, {"seconds", r.seconds},
                   {"pairs", r.pairs}, {"particle_updates_per_s", r.n / r.seconds}, {"pairs_per_s", r.pairs / r.seconds},
                   {"ns_per_pair", r.pairs > 0.0 ? nlohmann::json(1e9 * r.seconds / r.pairs) : nlohmann::json()},
+                  {"speedup", std::isfinite(speedup(r)) ? nlohmann::json(speedup(r)) : nlohmann::json()},
                   {"fraction_of_peak", std::isfinite(of_peak(r)) ? nlohmann::json(of_peak(r)) : nlohmann::json()}});
   nlohmann::json jm = nlohmann::json::object(), js = nlohmann::json::object();
   for (const auto& [n, v] : searches_per_step) js[std::to_string(n)] = v;
