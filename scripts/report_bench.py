@@ -9,6 +9,10 @@ def pct(x):
     return "" if x is None else f"{100 * x:.1f} %"
 
 
+def times(x):
+    return "" if x is None else f"{x:.2f}x"
+
+
 def dirty_note(pr):
     """The uncommitted changes the bench was built with, if its provenance records any."""
     if not is_dirty(pr):
@@ -39,7 +43,7 @@ def bench_body(results, out):
                     f"<td class='num'>{fmt(r['seconds'], '.4g')}</td><td class='num'>{fmt(r['particle_updates_per_s'], '.3e')}</td>"
                     f"<td class='num'>{fmt(r['pairs_per_s'], '.3e')}</td>"
                     f"<td class='num'>{fmt(r.get('ns_per_pair'), '.2f')}</td>"
-                    f"<td class='num'>{'' if r.get('speedup') is None else format(r['speedup'], '.2f') + 'x'}</td>"
+                    f"<td class='num'>{times(r.get('speedup'))}</td>"
                     f"<td class='num'>{pct(r.get('fraction_of_peak'))}</td></tr>")
     body.append("</table><p>Fitted cost slopes (time ~ N^slope): " +
                 ", ".join(f"{e(k)} {fmt(v, '.2f')}" for k, v in b["fitted_slopes"].items()) +
@@ -53,8 +57,9 @@ def bench_body(results, out):
         body.append(f"<p>Full hydro step: evolve's own (Courant step, neighbour lists reused while they cover), timed "
                     f"over the {b['full_step_window']} steps after the first. \"Stored shuffled\": the same step from "
                     f"the particles stored in a random order (as another code's snapshot may hold them), with evolve's "
-                    f"reordering of their storage along the search's cells, and without it. Speed-up: the stage's time on "
-                    f"one thread over its time on this many, each N measured on every thread count in turn.</p>")
+                    f"reordering of their storage along the search's cells, and without it.</p>")
+    body.append("<p>Speed-up: a stage's time on one thread over its time on this many, each N measured on every "
+                "thread count in turn.</p>")
     pk = b.get("peak")
     if pk:
         body.append(f"<p>Share of peak: the hydro forces at {pk['force_pair_flops']:.0f} floating-point operations a pair "

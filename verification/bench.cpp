@@ -237,6 +237,9 @@ void bench_command(BenchOptions o) {
     o.threads = {1};
     if (omp_get_num_procs() > 1) o.threads.push_back(omp_get_num_procs());
   }
+  // Ascending, each once: a run on more threads finds the one-thread time it is compared with.
+  std::sort(o.threads.begin(), o.threads.end());
+  o.threads.erase(std::unique(o.threads.begin(), o.threads.end()), o.threads.end());
   bench(o);
 }
 
