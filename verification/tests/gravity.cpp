@@ -2,8 +2,10 @@
 // search, tree gravity against the direct sum, the point-mass scene term.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <omp.h>
 #include <random>
 
+#include "sph/core/threads.hpp"
 #include "sph/gravity/point_mass.hpp"
 #include "sph/gravity/tree_gravity.hpp"
 #include "sph/search/grid_search.hpp"
@@ -35,6 +37,71 @@ TEST_CASE("tree: every particle in one leaf, moments add up", "[gravity][tree]")
   CHECK(t.nodes[0].mass == Approx(1.0).epsilon(1e-13));
   CHECK((t.nodes[0].com - com).norm() < 1e-13);
   CHECK((t.nodes[0].S - S).norm() < 1e-12 * S.norm());
+}
+
+// The build divides the top by the team and the subtrees on their own threads (sph/search/tree.cpp).
+// On one thread, on three, and with every loop forked (parallel_threshold 0: the whole tree made
+// by team divisions), the tree is the same node for node. Each node is checked against its
+// definition (9.4.3): its children's ranges tile its own, each child's particles lie in the child's
+// octant of the parent's cell, and its mass, centre of mass and second moment are sums over its
+// own particles (to round-off).
+TEST_CASE("tree: the same on any number of threads, each node as defined", "[gravity][tree]") {
+  const auto s = clustered(20000, 5);  // above parallel_threshold: a top and 16 or more subtrees
+  const std::size_t threshold = sph::parallel_threshold;
+  const int threads = omp_get_max_threads();
+  omp_set_num_threads(1);
+  const auto one = sph::build_tree<3>(s.x, s.m);
+  omp_set_num_threads(3);
+  const auto three = sph::build_tree<3>(s.x, s.m);
+  sph::parallel_threshold = 0;
+  const auto forked = sph::build_tree<3>(s.x, s.m, 4);
+  omp_set_num_threads(1);
+  const auto forked_one = sph::build_tree<3>(s.x, s.m, 4);
+  omp_set_num_threads(threads);
+  sph::parallel_threshold = threshold;
+  auto same = [](const sph::Tree<3>& a, const sph::Tree<3>& b) {
+    if (a.order != b.order || a.nodes.size() != b.nodes.size()) return false;
+    for (std::size_t k = 0; k < a.nodes.size(); ++k) {
+      const auto &u = a.nodes[k], &v = b.nodes[k];
+      if (u.centre != v.centre || u.size != v.size || u.lo != v.lo || u.hi != v.hi || u.first_child != v.first_child ||
+          u.n_children != v.n_children || u.begin != v.begin || u.end != v.end || u.mass != v.mass || u.com != v.com ||
+          u.S != v.S)
+        return false;
+    }
+    return true;
+  };
+  CHECK(same(one, three));
+  CHECK(same(forked, forked_one));
+  for (const auto* t : {&one, &forked}) {
+    std::size_t wrong = 0;
+    for (const auto& nd : t->nodes) {
+      int next = nd.begin;
+      for (int c = nd.first_child; c < nd.first_child + nd.n_children; ++c) {
+        const auto& ch = t->nodes[c];
+        wrong += ch.begin != next || ch.end <= ch.begin;
+        next = ch.end;
+        for (int q = ch.begin; q < ch.end; ++q)
+          for (int d = 0; d < 3; ++d) wrong += (s.x[t->order[q]][d] >= nd.centre[d]) != (ch.centre[d] > nd.centre[d]);
+      }
+      wrong += !nd.leaf() && next != nd.end;
+      double mass = 0.0;
+      V3 com = V3::Zero();
+      for (int q = nd.begin; q < nd.end; ++q) mass += s.m[t->order[q]], com += s.m[t->order[q]] * s.x[t->order[q]];
+      com /= mass;
+      Eigen::Matrix3d S = Eigen::Matrix3d::Zero();
+      for (int q = nd.begin; q < nd.end; ++q) {
+        const V3 dx = s.x[t->order[q]] - com;
+        S += s.m[t->order[q]] * dx * dx.transpose();
+      }
+      // S from the children's moments (parallel-axis theorem) or from the particles differs by the
+      // rounding of the offsets r - r_CM, u |r| each (u = 1.1e-16, sizes here O(1)): |dS| up to
+      // 2 M sqrt(3) d u |r|, which exceeds 1e-12 |S| for two particles 1e-4 apart in a clump.
+      const double u = 1.1e-16, offsets = 4.0 * mass * nd.size * u * (com.norm() + nd.size);
+      wrong += std::abs(nd.mass - mass) > 1e-12 * mass || (nd.com - com).norm() > 1e-12 * (1.0 + com.norm()) ||
+               (nd.S - S).norm() > 1e-12 * S.norm() + offsets;
+    }
+    CHECK(wrong == 0);
+  }
 }
 
 TEST_CASE("tree: coincident particles end in one leaf at max depth", "[gravity][tree]") {
