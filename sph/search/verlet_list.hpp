@@ -165,7 +165,12 @@ class VerletList {
       for (std::size_t i = first; i < last; ++i) active_.offset[i + 1] += base[t];
 #pragma omp single
       active_.j.resize(base[nt]);  // keeps thread 0's pairs, at its start
-      if (t > 0) std::copy_n(js.begin(), used, active_.j.begin() + static_cast<std::ptrdiff_t>(base[t]));
+      // The other buffers copied after them by every thread, a share of each: copied by their own
+      // threads, thread 0 waited for them (2.9 % of its time, N = 10,648 on two threads).
+      for (int s = 1; s < nt; ++s) {
+        const std::size_t len = base[s + 1] - base[s], a = len * t / nt, b = len * (t + 1) / nt;
+        std::copy(parts_[s].begin() + a, parts_[s].begin() + b, active_.j.begin() + base[s] + a);
+      }
     }
   }
 
