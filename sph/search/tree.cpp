@@ -182,8 +182,10 @@ Tree<D> build_tree(const std::vector<Vec<D>>& x, const std::vector<double>& m, i
 #pragma omp for nowait
     for (int i = 0; i < n; ++i) p[i] = {x[i], i}, l = l.cwiseMin(x[i]), h = h.cwiseMax(x[i]);
 #pragma omp critical
-    lo = lo.cwiseMin(l),
-    hi = hi.cwiseMax(h);  // min and max: the same in any order
+    {
+      lo = lo.cwiseMin(l);  // min and max: the same in any order
+      hi = hi.cwiseMax(h);
+    }
   }
   t.nodes.push_back(make_node<D>(0.5 * (lo + hi), std::max((hi - lo).maxCoeff(), 1e-300), 0, n));
 
@@ -219,15 +221,15 @@ Tree<D> build_tree(const std::vector<Vec<D>>& x, const std::vector<double>& m, i
   }
   const int top = static_cast<int>(t.nodes.size()), n_tasks = static_cast<int>(tasks.size());
   // The subtrees, side by side: a thread appends those it builds to its own list. Each list is
-  // reserved here, on the calling thread, for a whole tree (1.3-1.5 nodes a leaf for lattices and
-  // Gaussian clouds; only the pages written are ever mapped): glibc would serve another thread's
-  // growing list from that thread's own heap, trim it and fault it in again at every build
-  // (measured: 0.11 -> 0.56 s in every other build of a Gaussian cloud of 1e6 on two threads).
+  // reserved here, on the calling thread, for twice a thread's share of 1.5 nodes a leaf (a lattice
+  // makes 1.3, a Gaussian cloud 1.5; only the pages written are ever mapped): glibc would serve a
+  // list growing on another thread from that thread's own heap, and fault it in again at the next
+  // build (measured: 0.11 -> 0.56 s in every other build of a Gaussian cloud of 1e6 on two threads).
   struct Built {
     int thread, first, size;  // a subtree's place in its thread's list
   };
   std::vector<Nodes<D>> list(threads);
-  for (auto& l : list) l.reserve(2 * static_cast<std::size_t>(n / leaf_size) + 1);
+  for (auto& l : list) l.reserve(3 * static_cast<std::size_t>(n / leaf_size) / threads + 4 * task_size);
   std::vector<Built> built(n_tasks);
 #pragma omp parallel num_threads(threads) if (team)
   {
