@@ -44,9 +44,10 @@ TEST_CASE("tree: every particle in one leaf, moments add up", "[gravity][tree]")
 // by team divisions), the tree is the same node for node. Each node is checked against its
 // definition (9.4.3): its children's ranges tile its own, each child's particles lie in the child's
 // octant of the parent's cell, and its mass, centre of mass and second moment are sums over its
-// own particles (to round-off).
+// own particles (to round-off). The divisions are stable sorts: a leaf's particles are in index
+// order, as a serial build leaves them.
 TEST_CASE("tree: the same on any number of threads, each node as defined", "[gravity][tree]") {
-  const auto s = clustered(20000, 5);  // above parallel_threshold: a top and 16 or more subtrees
+  const auto s = clustered(20000, 5);  // above parallel_threshold (4096): a top, then subtrees
   const std::size_t threshold = sph::parallel_threshold;
   const int threads = omp_get_max_threads();
   omp_set_num_threads(1);
@@ -84,6 +85,7 @@ TEST_CASE("tree: the same on any number of threads, each node as defined", "[gra
           for (int d = 0; d < 3; ++d) wrong += (s.x[t->order[q]][d] >= nd.centre[d]) != (ch.centre[d] > nd.centre[d]);
       }
       wrong += !nd.leaf() && next != nd.end;
+      for (int q = nd.begin; nd.leaf() && q + 1 < nd.end; ++q) wrong += t->order[q] >= t->order[q + 1];
       double mass = 0.0;
       V3 com = V3::Zero();
       for (int q = nd.begin; q < nd.end; ++q) mass += s.m[t->order[q]], com += s.m[t->order[q]] * s.x[t->order[q]];
