@@ -54,7 +54,7 @@ int octant(const Vec<D>& x, const Vec<D>& c) {
   return o;
 }
 
-// Where a node's particles of octant o are once sorted: p[b + start[o] .. b + start[o + 1]).
+// Where a node's particles of octant o lie once sorted by octant: p[b + start[o] .. b + start[o + 1]).
 template <int D>
 using Starts = std::array<int, n_octants<D> + 1>;
 
