@@ -58,6 +58,15 @@ int octant(const Vec<D>& x, const Vec<D>& c) {
 template <int D>
 using Starts = std::array<int, n_octants<D> + 1>;
 
+// f(ch) for the chunks ch < chunks, by the team when there are several; one chunk is called
+// directly, without a parallel region (a subtree's divisions, millions of them, would each pay one).
+template <class F>
+void each_chunk(int chunks, F&& f) {
+  if (chunks == 1) return f(0);
+#pragma omp parallel for
+  for (int ch = 0; ch < chunks; ++ch) f(ch);
+}
+
 // p[b .. e) sorted by their octant about c, stably, through tmp[b .. e). With chunks > 1 the team
 // counts and moves the particles, a chunk a thread.
 template <int D>
@@ -71,23 +80,13 @@ Starts<D> sort_by_octant(Points<D>& p, Points<D>& tmp, int b, int e, const Vec<D
   auto move = [&](int ch) {
     for (int q = first(ch); q < first(ch + 1); ++q) p[at[ch][octant<D>(tmp[q].x, c)]++] = tmp[q];
   };
-  if (chunks > 1) {
-#pragma omp parallel for
-    for (int ch = 0; ch < chunks; ++ch) count(ch);
-  } else {
-    count(0);
-  }
+  each_chunk(chunks, count);
   Starts<D> start{};
   for (int o = 0; o < n_octants<D>; ++o) {
     start[o + 1] = start[o];
     for (int ch = 0; ch < chunks; ++ch) start[o + 1] += std::exchange(at[ch][o], b + start[o + 1]);
   }
-  if (chunks > 1) {
-#pragma omp parallel for
-    for (int ch = 0; ch < chunks; ++ch) move(ch);
-  } else {
-    move(0);
-  }
+  each_chunk(chunks, move);
   return start;
 }
 
