@@ -15,6 +15,7 @@ inline void batch_geometry(std::size_t i, const int* js, int nb, const Component
   for (int t = 0; t < nb; ++t) {
     const int j = js[t];
     double r2 = 0.0;
+#pragma GCC unroll 3
     for (int d = 0; d < D; ++d) {
       b.dx[d][t] = min_image(xs[d][i] - xs[d][j], L[d], wrap[d]);
       r2 += b.dx[d][t] * b.dx[d][t];

@@ -127,6 +127,7 @@ struct Scene {
   void share(int t, std::size_t i, int j, const Particles<D>& p, const Vec<D>& vi, const Components<D>& vs,
              const PairBatch<D>& b, Shares& sh) const {
     Vec<D> rij, vj;
+#pragma GCC unroll 3
     for (int k = 0; k < D; ++k) {
       rij[k] = b.dx[k][t];
       vj[k] = vs[k][j];
@@ -138,6 +139,7 @@ struct Scene {
     // fields under the mask, as masked gathers it does not emulate (and does not vectorise).
     const double in = b.r[t] < b.h[t] ? 1.0 : 0.0;
     if constexpr (written.dvdt)
+#pragma GCC unroll 3
       for (int k = 0; k < D; ++k) sh.dvdt[k][t] = in * s.dvdt[k];
     if constexpr (written.dudt) sh.dudt[t] = in * s.dudt;
     if constexpr (written.drhodt) sh.drhodt[t] = in * s.drhodt;
@@ -170,6 +172,7 @@ struct Scene {
       // unchanged, so the pairs beyond h_ij need no branch here either.
       for (int t = 0; t < nb; ++t) {
         if constexpr (written.dvdt)
+#pragma GCC unroll 3
           for (int k = 0; k < D; ++k) acc.dvdt[k] += sh.dvdt[k][t];
         if constexpr (written.dudt) acc.dudt += sh.dudt[t];
         if constexpr (written.drhodt) acc.drhodt += sh.drhodt[t];

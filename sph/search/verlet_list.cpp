@@ -29,6 +29,7 @@ inline std::size_t pairs_within(std::size_t i, const int* cj, std::size_t count,
     for (int t = 0; t < nb; ++t) {
       const Site& sj = s[cj[t0 + t]];
       double r2 = 0.0;
+#pragma GCC unroll 3
       for (int d = 0; d < D; ++d) {
         const double dx = min_image(s[i].x[d] - sj.x[d], L[d], wrap[d]);
         r2 += dx * dx;
