@@ -9,11 +9,11 @@ export SPHV_WERROR=${SPHV_WERROR:-ON}
 # The sanitizer tests (ASan + UBSan on the input and file code, verification/sanitizer_tests.cmake)
 # are built and run with the others.
 export SPHV_SANITIZER_TESTS=${SPHV_SANITIZER_TESTS:-ON}
-# Their own folder at -O2: the whole command must stay under 10 minutes on a fresh 2-core machine,
-# and -O3 (the main job's build/) costs a fifth to a third more compile time for the same checks
-# (sod_tube_1d.cpp: 44 s at -O3, 28-31 s at -O2, measured). -fvect-cost-model=cheap keeps -O3's
-# packing of the 3-vector arithmetic in the pair loops (density sum of 3e4 particles: 0.021 s at
-# plain -O2, 0.0075 s with it and at -O3; results bit-identical: no reassociation).
+# Their own folder at -O2: the whole command must stay under 10 minutes on a fresh 2-core machine.
+# The main job's build/ compiles the scenes the same way but sph/ and reference/ at -O3
+# (CMakeLists.txt: optimisation by part). -fvect-cost-model=cheap keeps -O3's packing of the
+# 3-vector arithmetic in the pair loops (density sum of 3e4 particles: 0.021 s at plain -O2,
+# 0.0075 s with it and at -O3; results bit-identical: no reassociation).
 export SPHV_BUILD_DIR=${SPHV_BUILD_DIR:-build-tests} SPHV_RELEASE_FLAGS=${SPHV_RELEASE_FLAGS:--O2 -fvect-cost-model=cheap -DNDEBUG}
 # Precompiled headers: 474 s -> 372-396 s for the clean build on 2 cores (measured; CMakeLists.txt).
 export SPHV_PCH=${SPHV_PCH:-ON}
