@@ -42,10 +42,10 @@ Components<D> components(const std::vector<Vec<D>>& x) {
 // |r_i - r_j|^2 at the nearest image, from positions held one array per dimension: the distance
 // of the vectorised density loop (weight_sum_of).
 // The loop over dimensions is unrolled by the pragma, here and in every loop over dimensions
-// inside a vectorised pair loop: -O3 unrolls it anyway, but at -O2 (the tests' build) a loop left
-// inside keeps the pair loop scalar (bench, N = 97,336, one thread: density 0.048 s, forces
-// 0.126 s at -O2 without the pragmas; 0.015 s and 0.037 s with them, as at -O3, whose code is
-// unchanged by them).
+// inside a vectorised pair loop: -O3 unrolls it anyway, but at -O2 (how the scenes are built,
+// CMakeLists.txt) a loop left inside keeps the pair loop scalar (bench, N = 97,336, one thread:
+// density 0.048 s, forces 0.126 s at -O2 without the pragmas; 0.015 s and 0.037 s with them, as
+// at -O3, whose code is unchanged by them).
 template <int D>
 inline double distance2(std::size_t i, int j, const Components<D>& xs, const Vec<D>& L, const Vec<D>& wrap) {
   double r2 = 0.0;
