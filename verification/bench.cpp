@@ -83,7 +83,8 @@ std::vector<Row> measure(long n_wanted, int threads, const BenchOptions& o, doub
     rows.push_back({"neighbour search, central h x4", n, threads,
                     best_time([&] { sph::grid_search<3>(p.x, wide, box, nw, bw); }), static_cast<double>(nw.pairs())});
   }
-  rows.push_back({"density (27)", n, threads, best_time([&] { sph::density_summation<3>(p, nl, box); }),
+  sph::Components<3> xs;  // kept, as a scene keeps its own (sph/hydro/scene.hpp)
+  rows.push_back({"density (27)", n, threads, best_time([&] { sph::density_summation<3>(p, nl, box, xs); }),
                   static_cast<double>(nl.pairs())});
   const HydroTimes hydro = time_hydro_step(p, box, best_time);
   rows.push_back({"hydro forces", n, threads, hydro.forces, hydro.pairs});

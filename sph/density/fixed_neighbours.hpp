@@ -42,7 +42,8 @@ template <int D>
 SmoothingLengthOutcome smoothing_length_iterate(Particles<D>& p, const Box<D>& box, const SmoothingLengthControl& c,
                                                 VerletList<D>& lists) {
   SmoothingLengthOutcome out;
-  auto density = [&] { density_summation(p, lists.update(p.x, p.h, box), box); };
+  Components<D> xs;  // kept over the iterations
+  auto density = [&] { density_summation<D>(p, lists.update(p.x, p.h, box), box, xs); };
   for (out.iterations = 1; out.iterations <= c.max_iterations; ++out.iterations) {
     density();
     out.change = 0.0;

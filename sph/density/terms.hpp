@@ -10,7 +10,8 @@ namespace sph {
 // Summation (27), recomputed from the positions before every pair loop.
 template <int D>
 struct SummationDensity {
-  void prepare(Particles<D>& p, const Neighbourhood<D>& nb) const { density_summation(p, nb.list, nb.box); }
+  Components<D> xs;  // the positions' columns, kept (Scene::xs)
+  void prepare(Particles<D>& p, const Neighbourhood<D>& nb) { density_summation<D>(p, nb.list, nb.box, xs); }
 };
 
 // Continuity equation: rho is evolved by the integrator from drho/dt.

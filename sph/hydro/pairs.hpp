@@ -5,6 +5,8 @@
 #include <cstddef>
 #include <vector>
 
+#include <omp.h>
+
 #include "sph/core/box.hpp"
 #include "sph/core/isa.hpp"
 #include "sph/core/threads.hpp"
@@ -158,30 +160,44 @@ template <class Visit>
 }
 #endif
 
-// visit(i) for every particle i, in the list's visiting order, in chunks of 256 handed out to
-// threads as they come free. Each i is handled by one thread and writes only i's outputs, so the
-// result is independent of the thread count. The copies compiled are those up to `widest`; the one
-// run is loop_path's (core/isa.hpp).
+// visit(i) for every particle i, in the list's visiting order. Each thread takes one stretch of
+// that order, the stretches holding about equal work (a particle's pairs, plus one for the
+// particle): consecutive particles share most neighbours, which then stay in the thread's cache.
+// With chunks of 256 handed out to threads as they came free, the two threads' chunks interleaved
+// and evolve's step on two threads took 0.49 s against 0.455 s (N = 1e6, least of two runs each,
+// measured; the same at N = 97,336). Each i is
+// handled by one thread and writes only i's outputs, so the result is independent of the thread
+// count. The copies compiled are those up to `widest`; the one run is loop_path's (core/isa.hpp).
 template <int D, IsaPath widest = IsaPath::avx512, class Visit>
 void for_each_particle(std::size_t n, const NeighbourList& nl, Visit&& visit) {
-  constexpr std::size_t chunk = 256;
   [[maybe_unused]] const IsaPath path = loop_path<D>(isa_path(), widest);
-#pragma omp parallel for schedule(dynamic) if (n >= parallel_threshold)
-  for (std::size_t k0 = 0; k0 < n; k0 += chunk) {
-    const std::size_t k1 = std::min(n, k0 + chunk);
+  auto stretch = [&](std::size_t k0, std::size_t k1) {
 #ifdef SPH_AVX2_COPY
     if constexpr (D == 3 && widest == IsaPath::avx512)
-      if (path == IsaPath::avx512) {
-        particles_in_avx512(k0, k1, nl, visit);
-        continue;
-      }
+      if (path == IsaPath::avx512) return particles_in_avx512(k0, k1, nl, visit);
     if constexpr (D >= 2 && widest != IsaPath::portable)
-      if (path == IsaPath::avx2) {
-        particles_in_avx2(k0, k1, nl, visit);
-        continue;
-      }
+      if (path == IsaPath::avx2) return particles_in_avx2(k0, k1, nl, visit);
 #endif
     particles_in_portable(k0, k1, nl, visit);
+  };
+  if (n < parallel_threshold) return stretch(0, n);
+  std::vector<std::size_t> from;  // thread t's stretch: from[t] .. from[t + 1] - 1
+#pragma omp parallel
+  {
+    const int nt = omp_get_num_threads(), t = omp_get_thread_num();
+#pragma omp single
+    {
+      from.assign(nt + 1, n);
+      from[0] = 0;
+      const double total = static_cast<double>(nl.pairs() + n);
+      double work = 0.0;
+      for (std::size_t k = 0, next = 1; k < n && next < static_cast<std::size_t>(nt); ++k) {
+        const std::size_t i = nl.visit(k);
+        work += static_cast<double>(nl.offset[i + 1] - nl.offset[i] + 1);
+        for (; next < static_cast<std::size_t>(nt) && work >= total * next / nt; ++next) from[next] = k + 1;
+      }
+    }
+    stretch(from[t], from[t + 1]);
   }
 }
 
@@ -197,12 +213,13 @@ void sum_over_pairs(const std::vector<Vec<D>>& x, const std::vector<double>& h, 
 }
 
 // store(i, sum of g(j, |r_ij|, h_ij) over i's pairs) for every particle i (weight_sum_of: g must
-// vanish for |r_ij| >= h_ij).
+// vanish for |r_ij| >= h_ij). xs: the caller's buffer for the positions' columns, kept from one
+// call to the next (see Scene::xs, hydro/scene.hpp).
 template <int D, class G, class Store>
 void sum_weights_over_pairs(const std::vector<Vec<D>>& x, const std::vector<double>& h, const NeighbourList& nl,
-                            const Box<D>& box, G&& g, Store&& store) {
+                            const Box<D>& box, Components<D>& xs, G&& g, Store&& store) {
   const Vec<D> L = box.length(), wrap = box.wrap_factor();
-  const Components<D> xs = components<D>(x);
+  copy_components<D>(x, xs);
   for_each_particle<D>(x.size(), nl, [&](std::size_t i) { store(i, weight_sum_of<D>(i, xs, h, nl, L, wrap, g)); });
 }
 

@@ -97,12 +97,19 @@ template <int D, class... Terms>
 struct Scene {
   static constexpr int dim = D;
   std::tuple<Terms...> terms;
+  // The positions and velocities one array per dimension, as the pair loop gathers them: buffers
+  // kept from one evaluation to the next. Allocated afresh, each evaluation's 6 x 8 MB (N = 1e6)
+  // went back to the system when freed, and the system's reclaiming them slowed the loops after
+  // it ~10x on one thread (a check of every particle 4 -> 34 ms; measured on this project's
+  // virtual machines, where a page-table change is costly).
+  Components<D> xs, vs;
 
   void derivatives(Particles<D>& p, const Neighbourhood<D>& nb, Derivatives<D>& d) {
     d.reset(p.size());
     std::apply([&](auto&... t) { (prepare(t, p, nb), ...); }, terms);
     if constexpr ((has_pair<Terms> || ...)) {
-      const Components<D> xs = components<D>(p.x), vs = components<D>(p.v);
+      copy_components<D>(p.x, xs);
+      copy_components<D>(p.v, vs);
       const Vec<D> L = nb.box.length(), wrap = nb.box.wrap_factor();
       const IsaPath path = loop_path<D>(isa_path(), widest);
       for_each_particle<D, widest>(p.size(), nb.list,

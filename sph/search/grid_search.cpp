@@ -264,7 +264,7 @@ template <int D>
   };
 
   // Counting sort by cell; positions copied in that order (wrapped into a periodic box).
-  auto& [coord, cell_of, start, sorted, owner, xs, hs, local, extra, parts, missed] = buf;
+  auto& [coord, cell_of, start, fill, sorted, owner, xs, hs, local, extra, parts, missed] = buf;
   coord.resize(n);
   cell_of.resize(n);
   start.assign(ncell + 1, 0);
@@ -288,10 +288,8 @@ template <int D>
     for (int d = 0; d < D; ++d) xs[d][k] = 0.0;
     hs[k] = 0.0;
   }
-  {
-    std::vector<std::int64_t> fill(start.begin(), start.end() - 1);
-    for (std::size_t i = 0; i < n; ++i) sorted[fill[cell_of[i]]++] = static_cast<int>(i);
-  }
+  fill.assign(start.begin(), start.end() - 1);
+  for (std::size_t i = 0; i < n; ++i) sorted[fill[cell_of[i]]++] = static_cast<int>(i);
 #pragma omp parallel for if (n >= parallel_threshold)
   for (std::size_t k = 0; k < n; ++k) {
     const std::size_t i = sorted[k];
@@ -406,12 +404,10 @@ template <int D>
   for (std::size_t i = 0; i < n; ++i) extra[i + 1] += extra[i];
   for (std::size_t i = 0; i < n; ++i) nl.offset[i + 1] += nl.offset[i] + (extra[i + 1] - extra[i]);
   resize_for_overwrite(nl.j, nl.offset[n]);
-  {
-    std::vector<std::size_t> fill(n);
-    for (std::size_t i = 0; i < n; ++i) fill[i] = nl.offset[i + 1] - (extra[i + 1] - extra[i]);
-    for (std::size_t t = 0; t < team; ++t)
-      for (const auto& jm : missed[t]) nl.j[fill[jm[0]]++] = jm[1];
-  }
+  fill.resize(n);
+  for (std::size_t i = 0; i < n; ++i) fill[i] = static_cast<std::int64_t>(nl.offset[i + 1] - (extra[i + 1] - extra[i]));
+  for (std::size_t t = 0; t < team; ++t)
+    for (const auto& jm : missed[t]) nl.j[fill[jm[0]]++] = jm[1];
 #pragma omp parallel for schedule(static) if (n >= parallel_threshold)
   for (std::size_t i = 0; i < n; ++i)
     std::copy_n(parts[owner[i]].begin() + local[i], nl.offset[i + 1] - nl.offset[i] - (extra[i + 1] - extra[i]),

@@ -33,7 +33,7 @@ namespace sph {
 template <int D>
 struct GridSearchBuffers {
   std::vector<std::array<int, D>> coord;
-  std::vector<std::int64_t> cell_of, start;
+  std::vector<std::int64_t> cell_of, start, fill;
   std::vector<int> sorted, owner;
   std::array<std::vector<double>, D> xs;  // positions in cell order, one array per dimension
   std::vector<double> hs;
