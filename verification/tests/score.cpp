@@ -21,10 +21,18 @@ using namespace sphv;
 
 namespace {
 
+// A file in the test program's scratch directory, which is removed with everything in it when the
+// program ends (a test run leaves nothing in /tmp; a run of all tests left 13 directories).
 fs::path scratch(const std::string& name) {
-  const auto d = fs::temp_directory_path() / ("sphv_score_test_" + std::to_string(getpid())) / name;
-  fs::create_directories(d.parent_path());
-  return d;
+  static const struct Scratch {
+    fs::path dir = fs::temp_directory_path() / ("sphv_score_test_" + std::to_string(getpid()));
+    ~Scratch() {
+      std::error_code ignored;
+      fs::remove_all(dir, ignored);
+    }
+  } scratch;
+  fs::create_directories(scratch.dir);
+  return scratch.dir / name;
 }
 
 void write_text(const fs::path& p, const std::string& text) {
