@@ -42,8 +42,10 @@ struct TwoPassConduction {
   ConductionParams k;
   std::vector<Vec<D>> gradT;
   void prepare(const Particles<D>& p, const Neighbourhood<D>& nb) {
-    std::vector<double> T(p.size());
-    for (std::size_t i = 0; i < p.size(); ++i) T[i] = p.u[i] / k.c_v;
+    const std::size_t n = p.size();
+    std::vector<double> T(n);
+#pragma omp parallel for if (n >= parallel_threshold)
+    for (std::size_t i = 0; i < n; ++i) T[i] = p.u[i] / k.c_v;
     gradT = sph_gradient<D, Form>(p, T, nb);
   }
   void pair(const Particles<D>& p, PairSums<D>& s, const Pair<D>& pr) const {
@@ -55,7 +57,9 @@ struct TwoPassConduction {
 template <int D>
 double diffusion_timestep(const Particles<D>& p, const ConductionParams& k, double C) {
   double dt = std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0; i < p.size(); ++i) dt = std::min(dt, C * p.h[i] * p.h[i] * p.rho[i] * k.c_v / k.K);
+  const std::size_t n = p.size();
+#pragma omp parallel for reduction(min : dt) if (n >= parallel_threshold)
+  for (std::size_t i = 0; i < n; ++i) dt = std::min(dt, C * p.h[i] * p.h[i] * p.rho[i] * k.c_v / k.K);
   return dt;
 }
 

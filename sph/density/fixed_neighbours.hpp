@@ -46,14 +46,17 @@ SmoothingLengthOutcome smoothing_length_iterate(Particles<D>& p, const Box<D>& b
   auto density = [&] { density_summation<D>(p, lists.update(p.x, p.h, box), box, xs); };
   for (out.iterations = 1; out.iterations <= c.max_iterations; ++out.iterations) {
     density();
-    out.change = 0.0;
-    out.at_cap = 0;
-    for (std::size_t i = 0; i < p.size(); ++i) {
+    double change = 0.0;
+    std::size_t at_cap = 0;
+    const std::size_t n = p.size();
+#pragma omp parallel for reduction(max : change) reduction(+ : at_cap) if (n >= parallel_threshold)
+    for (std::size_t i = 0; i < n; ++i) {
       double h = c.hfact * std::pow(p.m[i] / p.rho[i], 1.0 / D);  // (50)
-      if (!(h < c.h_max)) h = c.h_max, ++out.at_cap;
-      out.change = std::max(out.change, std::abs(h - p.h[i]) / p.h[i]);
+      if (!(h < c.h_max)) h = c.h_max, ++at_cap;
+      change = std::max(change, std::abs(h - p.h[i]) / p.h[i]);
       p.h[i] = h;
     }
+    out.change = change, out.at_cap = at_cap;
     if (out.change < c.tol) {
       out.converged = true;
       break;

@@ -14,7 +14,9 @@ namespace sph {
 // grad-h terms are neglected (9.4.4).
 template <int D>
 void smoothing_length_from_density(Particles<D>& p, double hfact) {
-  for (std::size_t i = 0; i < p.size(); ++i) p.h[i] = hfact * std::pow(p.m[i] / p.rho[i], 1.0 / D);
+  const std::size_t n = p.size();
+#pragma omp parallel for if (n >= parallel_threshold)
+  for (std::size_t i = 0; i < n; ++i) p.h[i] = hfact * std::pow(p.m[i] / p.rho[i], 1.0 / D);
 }
 
 template <int D>

@@ -27,7 +27,9 @@ struct PointMassGravity {
     return phi;
   }
   void finish(const Particles<D>& p, const Neighbourhood<D>&, Derivatives<D>& d) const {
-    for (std::size_t i = 0; i < p.size(); ++i) {
+    const std::size_t n = p.size();
+#pragma omp parallel for if (n >= parallel_threshold)
+    for (std::size_t i = 0; i < n; ++i) {
       Vec<D> a;
       double phi;
       field(p.x[i], a, phi);

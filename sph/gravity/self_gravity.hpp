@@ -22,7 +22,9 @@ struct SelfGravity {
 
   void finish(const Particles<3>& p, const Neighbourhood<3>&, Derivatives<3>& d) {
     GravityField f = tree_gravity(build_tree<3>(p.x, p.m), p.x, p.m, options);
-    for (std::size_t i = 0; i < p.size(); ++i) d.dvdt[i] += f.a[i];
+    const std::size_t n = p.size();
+#pragma omp parallel for if (n >= parallel_threshold)
+    for (std::size_t i = 0; i < n; ++i) d.dvdt[i] += f.a[i];
     phi = std::move(f.phi);
   }
 

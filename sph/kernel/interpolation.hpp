@@ -13,8 +13,10 @@ template <int D>
 std::vector<double> interpolate(const Particles<D>& p, const std::vector<double>& f,
                                 const NeighbourList& nl, const Box<D>& box) {
   using K = CubicSpline<D>;
-  std::vector<double> out(p.size());
-  for (std::size_t i = 0; i < p.size(); ++i) out[i] = p.m[i] / p.rho[i] * f[i] * K::W(0.0, p.h[i]);
+  const std::size_t n = p.size();
+  std::vector<double> out(n);
+#pragma omp parallel for if (n >= parallel_threshold)
+  for (std::size_t i = 0; i < n; ++i) out[i] = p.m[i] / p.rho[i] * f[i] * K::W(0.0, p.h[i]);
   for_each_pair<D>(p.x, p.h, nl, box, [&](std::size_t i, int j, const Vec<D>&, double r, double h) {
     out[i] += p.m[j] / p.rho[j] * f[j] * K::W(r, h);
   });

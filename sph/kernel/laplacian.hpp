@@ -50,7 +50,9 @@ std::vector<Vec<D>> sph_gradient(const Particles<D>& p, const std::vector<double
   for_each_pair<D>(p.x, p.h, nb.list, nb.box, [&](std::size_t i, int j, const Vec<D>& rij, double r, double h) {
     g[i] += Form::weight(p.m[j], T[i], T[j], p.rho[i], p.rho[j]) * CubicSpline<D>::gradW(rij, r, h);
   });
-  for (std::size_t i = 0; i < p.size(); ++i) g[i] *= Form::outer(p.rho[i]);
+  const std::size_t n = p.size();
+#pragma omp parallel for if (n >= parallel_threshold)
+  for (std::size_t i = 0; i < n; ++i) g[i] *= Form::outer(p.rho[i]);
   return g;
 }
 
@@ -68,7 +70,9 @@ std::vector<double> two_pass_laplacian(const Particles<D>& p, const std::vector<
   for_each_pair<D>(p.x, p.h, nb.list, nb.box, [&](std::size_t i, int j, const Vec<D>& rij, double r, double h) {
     lap[i] += divergence_pair<D, Form>(p, G, i, j, CubicSpline<D>::gradW(rij, r, h));
   });
-  for (std::size_t i = 0; i < p.size(); ++i) lap[i] *= Form::outer(p.rho[i]);
+  const std::size_t n = p.size();
+#pragma omp parallel for if (n >= parallel_threshold)
+  for (std::size_t i = 0; i < n; ++i) lap[i] *= Form::outer(p.rho[i]);
   return lap;
 }
 

@@ -112,8 +112,10 @@ class VerletList {
     used_skin_ = skin_;
     for (int d = 0; d < D; ++d)
       if (box.periodic[d] && widest > 0.5 * L[d]) used_skin_ = 0.0;
-    reach_.resize(h.size());
-    for (std::size_t k = 0; k < h.size(); ++k) reach_[k] = (1.0 + used_skin_) * h[k];
+    const std::size_t n = h.size();
+    reach_.resize(n);
+#pragma omp parallel for if (n >= parallel_threshold)
+    for (std::size_t k = 0; k < n; ++k) reach_[k] = (1.0 + used_skin_) * h[k];
     grid_search<D>(x, reach_, box, list_, buffers_);
     row_.clear();
     x0_ = x, h0_ = h, box_ = box;

@@ -49,7 +49,9 @@ double courant_time_step(const Particles<D>& p, const Derivatives<D>& d, double 
 template <int D>
 double chapter_time_step(const Particles<D>& p, const TimeStepControl& c) {
   double vmax = 0.0, h = std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0; i < p.size(); ++i) vmax = std::max(vmax, p.v[i].norm()), h = std::min(h, p.h[i]);
+  const std::size_t n = p.size();
+#pragma omp parallel for reduction(max : vmax) reduction(min : h) if (n >= parallel_threshold)
+  for (std::size_t i = 0; i < n; ++i) vmax = std::max(vmax, p.v[i].norm()), h = std::min(h, p.h[i]);
   return vmax > 0.0 ? c.eta * h / vmax : c.eta * c.eta;
 }
 
