@@ -9,3 +9,8 @@ add_test(NAME report_fixture COMMAND bash -c
 add_test(NAME bundle_compiles COMMAND bash ${CMAKE_SOURCE_DIR}/scripts/bundle_test.sh compiles ${_fixture} ${CMAKE_BINARY_DIR}/bundle_compiles)
 set_tests_properties(bundle_compiles PROPERTIES SKIP_RETURN_CODE 77)
 add_test(NAME bundle_refuses_dirty_tree COMMAND bash ${CMAKE_SOURCE_DIR}/scripts/bundle_test.sh dirty ${_fixture} ${CMAKE_BINARY_DIR}/bundle_dirty)
+# Every mutant of the kill matrix (verification/mutants, scripts/mutants.sh) still applies to the
+# tree, with the tool mutants.py applies it with: a change to a patched line must carry the mutant
+# along (two density mutants had stopped applying, unnoticed until a mutant run).
+add_test(NAME mutants_apply COMMAND bash -c
+  "for p in ${CMAKE_SOURCE_DIR}/verification/mutants/*.patch; do patch -p1 --dry-run --batch --silent -d ${CMAKE_SOURCE_DIR} -i \"$p\" > /dev/null || { echo \"mutant does not apply: $p\"; exit 1; }; done")
