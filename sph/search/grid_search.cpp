@@ -263,22 +263,13 @@ template <int D>
     return k;
   };
 
-  // Counting sort by cell; positions copied in that order (wrapped into a periodic box).
+  // Counting sort by cell, stable (by index within a cell, as a serial sort): each thread counts
+  // the cells of a contiguous range of indices, a cell's slots go to the threads in order, and each
+  // thread places its range. Positions then copied in that order (wrapped into a periodic box).
   auto& [coord, cell_of, start, fill, sorted, owner, xs, hs, local, extra, parts, missed] = buf;
   coord.resize(n);
   cell_of.resize(n);
-  start.assign(ncell + 1, 0);
-#pragma omp parallel for if (n >= parallel_threshold)
-  for (std::size_t i = 0; i < n; ++i) {
-    for (int d = 0; d < D; ++d) {
-      double xd = x[i][d] - lo[d];
-      if (box.periodic[d]) xd -= L[d] * std::floor(xd / L[d]);
-      coord[i][d] = std::clamp(static_cast<int>(xd / ext[d] * nc[d]), 0, nc[d] - 1);
-    }
-    cell_of[i] = flat(coord[i]);
-  }
-  for (std::size_t i = 0; i < n; ++i) ++start[cell_of[i] + 1];
-  for (std::int64_t c = 0; c < ncell; ++c) start[c + 1] += start[c];
+  start.resize(ncell + 1);  // every entry is written below
   // Padded by a vector's lanes of zeros (vectorised loads past the last candidate).
   sorted.resize(n + lanes);
   for (int d = 0; d < D; ++d) xs[d].resize(n + lanes);
@@ -288,8 +279,41 @@ template <int D>
     for (int d = 0; d < D; ++d) xs[d][k] = 0.0;
     hs[k] = 0.0;
   }
-  fill.assign(start.begin(), start.end() - 1);
-  for (std::size_t i = 0; i < n; ++i) sorted[fill[cell_of[i]]++] = static_cast<int>(i);
+#pragma omp parallel if (n >= parallel_threshold)
+  {
+    const int nt = omp_get_num_threads(), t = omp_get_thread_num();
+    const std::size_t first = n * t / nt, last = n * (t + 1) / nt;
+#pragma omp single
+    fill.resize(static_cast<std::size_t>(nt * ncell));  // thread t's count, then slot, of cell c: fill[t ncell + c]
+    std::int64_t* mine = fill.data() + t * ncell;
+    std::fill(mine, mine + ncell, 0);
+    for (std::size_t i = first; i < last; ++i) {
+      for (int d = 0; d < D; ++d) {
+        double xd = x[i][d] - lo[d];
+        if (box.periodic[d]) xd -= L[d] * std::floor(xd / L[d]);
+        coord[i][d] = std::clamp(static_cast<int>(xd / ext[d] * nc[d]), 0, nc[d] - 1);
+      }
+      cell_of[i] = flat(coord[i]);
+      ++mine[cell_of[i]];
+    }
+#pragma omp barrier
+#pragma omp for schedule(static)
+    for (std::int64_t c = 0; c < ncell; ++c) {  // start[c + 1]: cell c's count, for now
+      std::int64_t count = 0;
+      for (int u = 0; u < nt; ++u) {
+        const std::int64_t k = fill[u * ncell + c];
+        fill[u * ncell + c] = count;
+        count += k;
+      }
+      start[c + 1] = count;
+    }
+#pragma omp single
+    {
+      start[0] = 0;
+      for (std::int64_t c = 0; c < ncell; ++c) start[c + 1] += start[c];
+    }
+    for (std::size_t i = first; i < last; ++i) sorted[start[cell_of[i]] + mine[cell_of[i]]++] = static_cast<int>(i);
+  }
 #pragma omp parallel for if (n >= parallel_threshold)
   for (std::size_t k = 0; k < n; ++k) {
     const std::size_t i = sorted[k];

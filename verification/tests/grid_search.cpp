@@ -1,6 +1,6 @@
 // The grid search returns exactly the pairs of a brute-force O(N^2) search at the nearest
 // image, for periodic and open boxes, constant and variable h, a few particles far wider than the
-// rest (cells follow the median h), few cells per axis, and on more threads in the same order; and
+// rest (cells follow the median h), few cells per axis, and on any number of threads in the same order; and
 // lists reused across steps (sph/search/verlet_list.hpp) still hold every pair.
 #include <catch2/catch.hpp>
 
@@ -42,13 +42,17 @@ void compare(std::size_t n, bool periodic, double hmin, double hmax, unsigned se
     pairs += brute.size();
   }
   REQUIRE(pairs == nl.pairs());
-  // The same lists in the same order on one thread and on two (n above the parallel threshold).
+  // The same lists in the same order, and the same visiting order, on one thread, two and three (n
+  // above the parallel threshold; three split the counting sort's ranges unevenly).
   const int threads = omp_get_max_threads();
-  omp_set_num_threads(threads == 1 ? 2 : 1);
-  const auto other = sph::grid_search<D>(x, h, box);
-  omp_set_num_threads(threads);
-  REQUIRE(other.offset == nl.offset);
-  REQUIRE(other.j == nl.j);
+  for (int other_threads : {1, 2, 3}) {
+    omp_set_num_threads(other_threads);
+    const auto other = sph::grid_search<D>(x, h, box);
+    omp_set_num_threads(threads);
+    REQUIRE(other.offset == nl.offset);
+    REQUIRE(other.j == nl.j);
+    REQUIRE(other.order == nl.order);
+  }
 }
 
 }  // namespace
