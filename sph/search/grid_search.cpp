@@ -284,8 +284,8 @@ template <int D>
     const int nt = omp_get_num_threads(), t = omp_get_thread_num();
     const std::size_t first = n * t / nt, last = n * (t + 1) / nt;
 #pragma omp single
-    fill.resize(static_cast<std::size_t>(nt * ncell));  // thread t's count, then slot, of cell c: fill[t ncell + c]
-    std::int64_t* mine = fill.data() + t * ncell;
+    fill.resize(static_cast<std::size_t>(nt * ncell));
+    std::int64_t* mine = fill.data() + t * ncell;  // this thread's count, then next slot, of each cell
     std::fill(mine, mine + ncell, 0);
     for (std::size_t i = first; i < last; ++i) {
       for (int d = 0; d < D; ++d) {
@@ -297,22 +297,20 @@ template <int D>
       ++mine[cell_of[i]];
     }
 #pragma omp barrier
-#pragma omp for schedule(static)
-    for (std::int64_t c = 0; c < ncell; ++c) {  // start[c + 1]: cell c's count, for now
-      std::int64_t count = 0;
-      for (int u = 0; u < nt; ++u) {
-        const std::int64_t k = fill[u * ncell + c];
-        fill[u * ncell + c] = count;
-        count += k;
-      }
-      start[c + 1] = count;
-    }
 #pragma omp single
     {
       start[0] = 0;
-      for (std::int64_t c = 0; c < ncell; ++c) start[c + 1] += start[c];
+      for (std::int64_t c = 0; c < ncell; ++c) {
+        std::int64_t at = start[c];
+        for (int u = 0; u < nt; ++u) {  // thread u's count of cell c becomes its first slot there
+          const std::int64_t count = fill[u * ncell + c];
+          fill[u * ncell + c] = at;
+          at += count;
+        }
+        start[c + 1] = at;
+      }
     }
-    for (std::size_t i = first; i < last; ++i) sorted[start[cell_of[i]] + mine[cell_of[i]]++] = static_cast<int>(i);
+    for (std::size_t i = first; i < last; ++i) sorted[mine[cell_of[i]]++] = static_cast<int>(i);
   }
 #pragma omp parallel for if (n >= parallel_threshold)
   for (std::size_t k = 0; k < n; ++k) {

@@ -34,7 +34,7 @@ template <int D>
 struct GridSearchBuffers {
   std::vector<std::array<int, D>> coord;
   std::vector<std::int64_t> cell_of, start;
-  std::vector<std::int64_t> fill;  // counting-sort cursors: per thread and cell (the sort), then per particle (missed pairs)
+  std::vector<std::int64_t> fill;  // cursors: per thread and cell (the sort), then per particle (missed pairs)
   std::vector<int> sorted, owner;
   std::array<std::vector<double>, D> xs;  // positions in cell order, one array per dimension
   std::vector<double> hs;

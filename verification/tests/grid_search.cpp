@@ -1,7 +1,7 @@
 // The grid search returns exactly the pairs of a brute-force O(N^2) search at the nearest
 // image, for periodic and open boxes, constant and variable h, a few particles far wider than the
-// rest (cells follow the median h), few cells per axis, and on any number of threads in the same order; and
-// lists reused across steps (sph/search/verlet_list.hpp) still hold every pair.
+// rest (cells follow the median h), few cells per axis, and in the same order on any number of
+// threads; and lists reused across steps (sph/search/verlet_list.hpp) still hold every pair.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
