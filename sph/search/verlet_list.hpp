@@ -13,7 +13,7 @@
 namespace sph {
 
 // A particle's position and support radius in one 32-byte record, {x_1 .. x_D, (unused), h}: the
-// pair filter loads a candidate's with one aligned load (four candidates at a time, then
+// pair filter loads a candidate's with one aligned load (four or eight candidates at a time, then
 // transposed) instead of four scattered ones.
 struct alignas(32) Site {
   double x[3];
@@ -22,16 +22,16 @@ struct alignas(32) Site {
 
 // For i = first .. last-1: the pairs (i, j) of list's row r = row[i] (r = i where row is null)
 // with |r_ij| < max(h_i, h_j), appended to js in the row's order, with offset[i + 1] = the count so
-// far; returns the count. Compiled in search/verlet_list.cpp in two copies like the pair loops
-// (core/isa.hpp): portable, and AVX2 + FMA.
+// far; returns the count. Compiled in search/verlet_list.cpp in copies like the pair loops, the one
+// run is loop_path's (core/isa.hpp).
 template <int D>
-std::size_t select_pairs(bool avx2, std::size_t first, std::size_t last, const NeighbourList& list, const int* row,
+std::size_t select_pairs(IsaPath path, std::size_t first, std::size_t last, const NeighbourList& list, const int* row,
                          const Site* sites, const Vec<D>& L, const Vec<D>& wrap, int* js, std::size_t* offset);
-extern template std::size_t select_pairs<1>(bool, std::size_t, std::size_t, const NeighbourList&, const int*,
+extern template std::size_t select_pairs<1>(IsaPath, std::size_t, std::size_t, const NeighbourList&, const int*,
                                             const Site*, const Vec<1>&, const Vec<1>&, int*, std::size_t*);
-extern template std::size_t select_pairs<2>(bool, std::size_t, std::size_t, const NeighbourList&, const int*,
+extern template std::size_t select_pairs<2>(IsaPath, std::size_t, std::size_t, const NeighbourList&, const int*,
                                             const Site*, const Vec<2>&, const Vec<2>&, int*, std::size_t*);
-extern template std::size_t select_pairs<3>(bool, std::size_t, std::size_t, const NeighbourList&, const int*,
+extern template std::size_t select_pairs<3>(IsaPath, std::size_t, std::size_t, const NeighbourList&, const int*,
                                             const Site*, const Vec<3>&, const Vec<3>&, int*, std::size_t*);
 
 // Neighbour lists reused across steps (a Verlet list: 9.4.3's search with a skin). A search at
@@ -157,9 +157,9 @@ class VerletList {
         for (std::size_t k = first; k < last; ++k) bound += list_.offset[row_[k] + 1] - list_.offset[row_[k]];
       auto& js = t == 0 ? active_.j : parts_[t];
       if (js.size() < bound) resize_for_overwrite(js, bound);
-      const std::size_t used = select_pairs<D>(avx2_loops(isa_path()), first, last, list_,
-                                               row_.empty() ? nullptr : row_.data(), sites_.data(), L, wrap,
-                                               js.data(), active_.offset.data());
+      const std::size_t used =
+          select_pairs<D>(loop_path<D>(isa_path()), first, last, list_, row_.empty() ? nullptr : row_.data(),
+                          sites_.data(), L, wrap, js.data(), active_.offset.data());
       base[t + 1] = used;
 #pragma omp barrier
 #pragma omp single

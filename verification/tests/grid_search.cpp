@@ -161,8 +161,8 @@ void verlet_steps(std::size_t n, bool periodic, double h0, double speed, double 
 
 // sph/search/verlet_list.hpp's reuse conditions (a) (each particle within half its skin) and
 // (b) (2 d_max and h's growth within the skin) against a brute-force search at every step, on
-// every instruction-set path this CPU has (the pair filter has a portable and an AVX2 copy, the
-// search's candidate test an AVX-512 one too).
+// every instruction-set path this CPU has (the pair filter and the search's candidate test have a
+// portable, an AVX2 and an AVX-512 copy).
 TEST_CASE("reused neighbour lists hold every pair of a brute-force search", "[neighbours]") {
   const sph::IsaPath chosen = sph::isa_path();
   for (sph::IsaPath path : {sph::IsaPath::portable, sph::IsaPath::avx2, sph::IsaPath::avx512}) {
