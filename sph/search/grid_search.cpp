@@ -98,16 +98,20 @@ template <int D>
 
 #ifdef SPH_AVX2_COPY
 // candidates in 3D with AVX2, four consecutive candidates at a time, the kept ones moved to the
-// front of a 4-lane store (which may write entries past them: the list has room).
-// Without FMA, so each lane rounds as the portable loop does: the same lists on every path
+// front of a 4-lane store (which may write entries past them: the list has room); with `wide`,
+// own_reach: kept within h_s, and the few pairs the other end misses written one by one, in their
+// order. Without FMA, so each lane rounds as the portable loop does: the same lists on every path
 // (verification/tests/grid_search.cpp). The search with the padded h of the reused lists (1.2 h,
 // 91 pairs a particle), one thread: 9.1-9.6 -> 5.1-5.3 ns a listed pair at N = 125,000, 9.5 ->
-// 5.0 at N = 1e6 (measured; the lists the same).
-[[gnu::target("avx2")]] std::size_t candidates_avx2(std::size_t s, const std::vector<Run<3>>& sten, Sorted<3> v,
-                                                     int* out) {
+// 5.0 at N = 1e6 (measured; the lists the same). With wide h (`sphv bench`'s gas with the central
+// 0.4 % of h four times larger), AVX-512 against the portable own_reach, one thread: N = 97,336
+// 0.095 -> 0.054 s, N = 1e6 0.94 -> 0.52 s (two threads 0.52 -> 0.30 s; measured, the lists the same).
+template <bool wide>
+[[gnu::target("avx2")]] Found reach_avx2(std::size_t s, int i, const std::vector<Run<3>>& sten, Sorted<3> v, int* out,
+                                         std::array<int, 2>* miss) {
   const __m256d xi = _mm256_set1_pd(v.x[0][s]), yi = _mm256_set1_pd(v.x[1][s]), zi = _mm256_set1_pd(v.x[2][s]),
                 hi = _mm256_set1_pd(v.h[s]);
-  std::size_t used = 0;
+  std::size_t used = 0, missed = 0;
   for (const Run<3>& run : sten) {
     const __m256d sx = _mm256_set1_pd(run.shift[0]), sy = _mm256_set1_pd(run.shift[1]),
                   sz = _mm256_set1_pd(run.shift[2]);
@@ -117,29 +121,35 @@ template <int D>
                     dz = _mm256_sub_pd(_mm256_sub_pd(zi, _mm256_loadu_pd(v.x[2] + k)), sz);
       const __m256d r2 =
           _mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_add_pd(_mm256_mul_pd(dy, dy), _mm256_mul_pd(dz, dz)));
-      const __m256d hm = _mm256_max_pd(_mm256_loadu_pd(v.h + k), hi);  // std::max(h_s, h_k)
+      const __m256d hk = _mm256_loadu_pd(v.h + k);
+      const __m256d hm = wide ? hi : _mm256_max_pd(hk, hi);  // std::max(h_s, h_k)
       const std::int64_t left = run.last - k;
       const std::uint64_t self = static_cast<std::uint64_t>(s) - static_cast<std::uint64_t>(k);
       const int keep = _mm256_movemask_pd(_mm256_cmp_pd(r2, _mm256_mul_pd(hm, hm), _CMP_LT_OQ)) &
                        (left >= 4 ? 15 : (1 << left) - 1) & (self < 4 ? ~(1 << self) : 15);
       const __m128i j4 = _mm_loadu_si128(reinterpret_cast<const __m128i*>(v.index + k));
-      _mm_storeu_si128(reinterpret_cast<__m128i*>(out + used),
-                       _mm_shuffle_epi8(j4, _mm_loadu_si128(reinterpret_cast<const __m128i*>(compaction[keep].data()))));
+      _mm_storeu_si128(
+          reinterpret_cast<__m128i*>(out + used),
+          _mm_shuffle_epi8(j4, _mm_loadu_si128(reinterpret_cast<const __m128i*>(compaction[keep].data()))));
       used += static_cast<std::size_t>(__builtin_popcount(keep));
+      if constexpr (wide)  // kept, and not within h_k
+        for (int m = keep & _mm256_movemask_pd(_mm256_cmp_pd(r2, _mm256_mul_pd(hk, hk), _CMP_NLT_UQ)); m; m &= m - 1)
+          miss[missed++] = {v.index[k + __builtin_ctz(m)], i};
     }
   }
-  return used;
+  return {used, missed};
 }
 
-// candidates_avx2 with AVX-512, eight candidates at a time, compacted by vpcompressd into a register
+// reach_avx2 with AVX-512, eight candidates at a time, compacted by vpcompressd into a register
 // (the form that writes memory is slow on AMD's Zen 4): 5.6 -> 4.5 ns a listed pair (the search
 // above, N = 125,000, one thread; the lists the same). The file is compiled without FMA
 // contraction (CMakeLists.txt), which AVX-512 would otherwise allow.
-[[gnu::target(SPH_AVX512_TARGET)]] std::size_t candidates_avx512(std::size_t s, const std::vector<Run<3>>& sten,
-                                                                 Sorted<3> v, int* out) {
+template <bool wide>
+[[gnu::target(SPH_AVX512_TARGET)]] Found reach_avx512(std::size_t s, int i, const std::vector<Run<3>>& sten,
+                                                      Sorted<3> v, int* out, std::array<int, 2>* miss) {
   const __m512d xi = _mm512_set1_pd(v.x[0][s]), yi = _mm512_set1_pd(v.x[1][s]), zi = _mm512_set1_pd(v.x[2][s]),
                 hi = _mm512_set1_pd(v.h[s]);
-  std::size_t used = 0;
+  std::size_t used = 0, missed = 0;
   for (const Run<3>& run : sten) {
     const __m512d sx = _mm512_set1_pd(run.shift[0]), sy = _mm512_set1_pd(run.shift[1]),
                   sz = _mm512_set1_pd(run.shift[2]);
@@ -149,9 +159,10 @@ template <int D>
                     dz = _mm512_sub_pd(_mm512_sub_pd(zi, _mm512_loadu_pd(v.x[2] + k)), sz);
       const __m512d r2 =
           _mm512_add_pd(_mm512_mul_pd(dx, dx), _mm512_add_pd(_mm512_mul_pd(dy, dy), _mm512_mul_pd(dz, dz)));
+      const __m512d hk = _mm512_loadu_pd(v.h + k);
       // std::max(h_s, h_k); the masked form: GCC 12 warns that _mm512_max_pd's undefined operand
       // may be used uninitialised
-      const __m512d hm = _mm512_maskz_max_pd(0xff, _mm512_loadu_pd(v.h + k), hi);
+      const __m512d hm = wide ? hi : _mm512_maskz_max_pd(0xff, hk, hi);
       const std::int64_t left = run.last - k;
       const std::uint64_t self = static_cast<std::uint64_t>(s) - static_cast<std::uint64_t>(k);
       const unsigned keep = _mm512_cmp_pd_mask(r2, _mm512_mul_pd(hm, hm), _CMP_LT_OQ) &
@@ -160,11 +171,27 @@ template <int D>
       _mm256_storeu_si256(reinterpret_cast<__m256i*>(out + used),
                           _mm256_maskz_compress_epi32(static_cast<__mmask8>(keep), j8));
       used += static_cast<std::size_t>(__builtin_popcount(keep));
+      if constexpr (wide)  // kept, and not within h_k
+        for (unsigned m = keep & _mm512_cmp_pd_mask(r2, _mm512_mul_pd(hk, hk), _CMP_NLT_UQ); m; m &= m - 1)
+          miss[missed++] = {v.index[k + __builtin_ctz(m)], i};
     }
   }
-  return used;
+  return {used, missed};
 }
 #endif
+
+// own_reach in the copy of path, as candidates_on.
+template <int D>
+inline Found own_reach_on([[maybe_unused]] IsaPath path, std::size_t s, int i, const std::vector<Run<D>>& sten,
+                          const Sorted<D>& v, int* out, std::array<int, 2>* miss) {
+#ifdef SPH_AVX2_COPY
+  if constexpr (D == 3) {
+    if (path == IsaPath::avx512) return reach_avx512<true>(s, i, sten, v, out, miss);
+    if (path == IsaPath::avx2) return reach_avx2<true>(s, i, sten, v, out, miss);
+  }
+#endif
+  return own_reach<D>(s, i, sten, v, out, miss);
+}
 
 // candidates in the copy of path (loop_path, core/isa.hpp): in 3D the vectorised ones.
 template <int D>
@@ -172,8 +199,8 @@ inline std::size_t candidates_on([[maybe_unused]] IsaPath path, std::size_t s, c
                                  const Sorted<D>& v, int* out) {
 #ifdef SPH_AVX2_COPY
   if constexpr (D == 3) {
-    if (path == IsaPath::avx512) return candidates_avx512(s, sten, v, out);
-    if (path == IsaPath::avx2) return candidates_avx2(s, sten, v, out);
+    if (path == IsaPath::avx512) return reach_avx512<false>(s, 0, sten, v, out, nullptr).listed;
+    if (path == IsaPath::avx2) return reach_avx2<false>(s, 0, sten, v, out, nullptr).listed;
   }
 #endif
   return candidates(s, sten, v, out);
@@ -406,7 +433,7 @@ template <int D>
         if (used + sten_size + lanes > js.size()) js.resize(2 * js.size() + sten_size + lanes);
         if constexpr (wide) {
           if (nm + sten_size > mt.size()) mt.resize(2 * mt.size() + sten_size);
-          const Found f = own_reach(s, static_cast<int>(i), sten, view, js.data() + used, mt.data() + nm);
+          const Found f = own_reach_on(path, s, static_cast<int>(i), sten, view, js.data() + used, mt.data() + nm);
           used += f.listed;
           nm += f.missed;
         } else {

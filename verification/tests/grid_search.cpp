@@ -5,7 +5,9 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <initializer_list>
 #include <random>
+#include <utility>
 
 #include <omp.h>
 
@@ -77,12 +79,13 @@ TEST_CASE("grid search equals brute force", "[neighbours]") {
   sph::set_isa_path(chosen);
 }
 
-// The vectorised candidate loop rounds as the portable one: the same lists in the same order, on a
-// lattice where many pairs sit exactly at |r_ij| = h (ties decided alike) and on a jittered one.
+// The vectorised candidate loops round as the portable ones: the same lists in the same order, on a
+// lattice where many pairs sit exactly at |r_ij| = h (ties decided alike) and on a jittered one;
+// with one particle in 97 of three times the support radius, the wide-h search (own_reach).
 TEST_CASE("grid search lists the same pairs on every instruction-set path", "[neighbours]") {
   if (!sph::isa_supported(sph::IsaPath::avx2)) return;
   const sph::IsaPath chosen = sph::isa_path();
-  for (double jitter : {0.0, 0.3}) {
+  for (auto [jitter, wide] : std::initializer_list<std::pair<double, bool>>{{0.0, false}, {0.3, false}, {0.3, true}}) {
     std::mt19937 rng(21);
     std::uniform_real_distribution<double> u(-0.5, 0.5);
     const int side = 20;
@@ -93,6 +96,8 @@ TEST_CASE("grid search lists the same pairs on every instruction-set path", "[ne
         for (int c = 0; c < side; ++c)
           x.push_back(dx * sph::Vec<3>(a + jitter * u(rng), b + jitter * u(rng), c + jitter * u(rng)));
     std::vector<double> h(x.size(), 2.0 * dx);
+    if (wide)
+      for (std::size_t i = 0; i < h.size(); i += 97) h[i] = 6.0 * dx;
     for (bool periodic : {true, false}) {
       const sph::Box<3> box = sph::unit_box<3>(periodic);
       sph::set_isa_path(sph::IsaPath::portable);
