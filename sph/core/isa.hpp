@@ -32,9 +32,6 @@ inline const char* isa_name(IsaPath p) {
   return p == IsaPath::avx512 ? "avx512" : p == IsaPath::avx2 ? "avx2" : "portable";
 }
 
-// The pair loops' copy: AVX2 and FMA on the avx2 and avx512 paths.
-inline bool avx2_loops(IsaPath p) { return p != IsaPath::portable; }
-
 // The copy of a D-dimensional scene's pair loops that path p runs: in 1D the portable one (1D runs
 // are small; another copy would cost compile time, not run time), in 2D at most AVX2, in 3D p's
 // own (AVX-512: the bench's force loop 7.0-7.4 -> 6.1-6.5 ns a pair, the density 2.5-2.6 -> 2.4,
