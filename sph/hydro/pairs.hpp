@@ -9,6 +9,7 @@
 
 #include "sph/core/box.hpp"
 #include "sph/core/isa.hpp"
+#include "sph/core/stretches.hpp"
 #include "sph/core/threads.hpp"
 #include "sph/core/uninitialized.hpp"
 #include "sph/kernel/cubic_spline.hpp"
@@ -160,14 +161,20 @@ template <class Visit>
 }
 #endif
 
-// visit(i) for every particle i, in the list's visiting order. Each thread takes one stretch of
+// visit(i) for every particle i, in the list's visiting order. Each thread starts on one stretch of
 // that order, the stretches holding about equal work (a particle's pairs, plus one for the
 // particle): consecutive particles share most neighbours, which then stay in the thread's cache.
 // With chunks of 256 handed out to threads as they came free, the two threads' chunks interleaved,
 // and evolve's step on two threads took 0.49 s against 0.455 s (N = 1e6, least of two runs each;
-// `sphv bench` at N = 97,336: 1.63-1.72x one thread's speed against 1.94x; measured). Each i is
-// handled by one thread and writes only i's outputs, so the result is independent of the thread
-// count. The copies compiled are those up to `widest`; the one run is loop_path's (core/isa.hpp).
+// `sphv bench` at N = 97,336: 1.63-1.72x one thread's speed against 1.94x; measured). A thread done
+// with its stretch takes over the back of another's (core/stretches.hpp): with fixed stretches a
+// slowed core held the other up, and the force loop of evolve's step on two threads took 0.348 s
+// and 0.325 s on average against 0.316 s and 0.298 s (N = 1e6, 64 steps of each, alternating in
+// blocks of 8, two runs; the least step unchanged). Stretches of equal length instead of equal
+// work, stolen from alike, made the least force loop 2 % slower. Each i is handled by one thread
+// and writes only i's outputs, so the result is independent of the thread count and of which
+// thread takes which chunk. The copies compiled are those up to `widest`; the one run is
+// loop_path's (core/isa.hpp).
 template <int D, IsaPath widest = IsaPath::avx512, class Visit>
 void for_each_particle(std::size_t n, const NeighbourList& nl, Visit&& visit) {
   [[maybe_unused]] const IsaPath path = loop_path<D>(isa_path(), widest);
@@ -182,6 +189,7 @@ void for_each_particle(std::size_t n, const NeighbourList& nl, Visit&& visit) {
   };
   if (n < parallel_threshold) return stretch(0, n);
   std::vector<std::size_t> from;  // thread t's stretch: from[t] .. from[t + 1] - 1
+  Stretches stretches;
 #pragma omp parallel
   {
     const int nt = omp_get_num_threads(), t = omp_get_thread_num();
@@ -196,8 +204,9 @@ void for_each_particle(std::size_t n, const NeighbourList& nl, Visit&& visit) {
         work += static_cast<double>(nl.offset[i + 1] - nl.offset[i] + 1);
         for (; next < static_cast<std::size_t>(nt) && work >= total * next / nt; ++next) from[next] = k + 1;
       }
+      stretches.reset(from.data(), nt);
     }
-    stretch(from[t], from[t + 1]);
+    stretches.work(t, stretch);
   }
 }
 
