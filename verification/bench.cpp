@@ -36,12 +36,14 @@ struct Row {
   double pairs;  // pair interactions (particle-particle and particle-node for the tree)
 };
 
-// Best of a few repetitions (two for runs over a second): the machine's noise only adds time. Never
-// one: the first run pays the first touch of buffers a run keeps (at N = 1e6 the search's single
-// run took 2.07 s on one thread, a warm one 0.51 s on two; measured).
+// Best of a few repetitions (three for runs over a second): the machine's noise only adds time.
+// Never one: the first run pays the first touch of buffers a run keeps (at N = 1e6 the search's
+// single run took 2.07 s on one thread, a warm one 0.51 s on two; measured). Nor two: on two
+// threads the second wide-h search still faulted in 22,000 pages (0.40 s, the third 0.29 s; a
+// thread writes past where it stopped in the first run, whose page faults slowed it).
 double best_time(const std::function<void()>& f) {
   double best = 1e300, total = 0.0;
-  for (int k = 0; k < 5 && (k < 2 || total < 1.0); ++k) {
+  for (int k = 0; k < 5 && (k < 3 || total < 1.0); ++k) {
     const auto t0 = std::chrono::steady_clock::now();
     f();
     const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

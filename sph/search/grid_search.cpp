@@ -11,6 +11,7 @@
 #include <omp.h>
 
 #include "sph/core/isa.hpp"
+#include "sph/core/stretches.hpp"
 #include "sph/core/threads.hpp"
 #include "sph/search/lane_compaction.hpp"
 
@@ -293,7 +294,7 @@ template <int D>
   // Counting sort by cell, stable (by index within a cell, as a serial sort): each thread counts
   // the cells of a contiguous range of indices, a cell's slots go to the threads in order, and each
   // thread places its range. Positions then copied in that order (wrapped into a periodic box).
-  auto& [coord, cell_of, start, fill, sorted, owner, xs, hs, local, extra, parts, missed] = buf;
+  auto& [coord, cell_of, start, fill, sorted, owner, xs, hs, local, extra, parts, missed, chunks] = buf;
   coord.resize(n);
   cell_of.resize(n);
   start.resize(ncell + 1);  // every entry is written below
@@ -394,31 +395,39 @@ template <int D>
   };
 
   // One pass over the particles in cell order (a stencil built once per cell and reach): each
-  // thread fills the lists of a contiguous range into its own buffer. Nearly uniform h (cells of
-  // h_max/2): every particle searches h_max and keeps |r_ij| < max(h_i, h_j) (candidates). Wide
+  // thread fills the lists of the chunks it takes (core/stretches.hpp; first its own stretch of
+  // the order) into its own buffer, noting each particle's place there. Nearly uniform h (cells
+  // of h_max/2): every particle searches h_max and keeps |r_ij| < max(h_i, h_j) (candidates). Wide
   // h: i searches its own h_i, keeps |r_ij| < h_i and notes the pairs the other end misses as
-  // (j, i) in visiting order (h_j <= |r_ij| < h_i).
+  // (j, i) in visiting order within a chunk (h_j <= |r_ij| < h_i), and the chunk where they start.
   owner.resize(n);
   local.resize(n);
   std::size_t team = 1;  // threads of this search (the buffers may have more, from an earlier one)
+  std::vector<std::size_t> from;
+  Stretches stretches;
 #pragma omp parallel if (n >= parallel_threshold)
   {
     const int nt = omp_get_num_threads(), t = omp_get_thread_num();
 #pragma omp single
     {
       team = static_cast<std::size_t>(nt);
-      if (parts.size() < team) parts.resize(team), missed.resize(team);
+      if (parts.size() < team) parts.resize(team), missed.resize(team), chunks.resize(team);
+      from.resize(team + 1);
+      for (std::size_t u = 0; u <= team; ++u) from[u] = n * u / team;
+      stretches.reset(from.data(), nt);
     }
-    const std::size_t first = n * t / nt, last = n * (t + 1) / nt;
     auto& js = parts[t];
     std::vector<std::array<int, 2>>& mt = missed[t];
-    js.resize(std::max(js.size(), (last - first) * 64));
+    std::vector<MissedChunk>& log = chunks[t];
+    log.clear();
+    js.resize(std::max(js.size(), n / team * 64));
     std::size_t used = 0, nm = 0;
     std::vector<Run<D>> sten;
     std::size_t sten_size = 0;  // the stencil's candidates
     std::int64_t sten_of = -1;
     int sten_reach = 0;
-    auto scan = [&](auto wide) {  // a compile-time choice: no test of the mode per candidate
+    auto scan = [&](auto wide, std::size_t first, std::size_t last) {  // wide: a compile-time choice
+      if constexpr (wide) log.push_back({first, nm});
       for (std::size_t s = first; s < last; ++s) {
         const std::size_t i = sorted[s];
         const double hi = hs[s];
@@ -442,21 +451,29 @@ template <int D>
         nl.offset[i + 1] = used - local[i];
       }
     };
-    if (width < 0.5 * hmax) scan(std::true_type{});
-    else scan(std::false_type{});
+    if (width < 0.5 * hmax) stretches.work(t, [&](std::size_t a, std::size_t b) { scan(std::true_type{}, a, b); });
+    else stretches.work(t, [&](std::size_t a, std::size_t b) { scan(std::false_type{}, a, b); });
     mt.resize(nm);
+    log.push_back({n, nm});  // closes the last chunk
   }
-  // The missed pairs, counted per receiving particle in visiting order (threads' ranges in order).
-  extra.assign(n + 1, 0);
+  // The missed pairs in the visiting order of the particles that found them: the chunks in order.
+  std::vector<std::array<std::size_t, 3>> in_order;  // {first particle, thread, index of the chunk}
   for (std::size_t t = 0; t < team; ++t)
-    for (const auto& jm : missed[t]) ++extra[jm[0] + 1];
+    for (std::size_t c = 0; c + 1 < chunks[t].size(); ++c) in_order.push_back({chunks[t][c].first, t, c});
+  std::sort(in_order.begin(), in_order.end());
+  auto each_missed = [&](auto&& f) {
+    for (const auto& [first, t, c] : in_order)
+      for (std::size_t k = chunks[t][c].at; k < chunks[t][c + 1].at; ++k) f(missed[t][k]);
+  };
+  // Counted per receiving particle.
+  extra.assign(n + 1, 0);
+  each_missed([&](const std::array<int, 2>& jm) { ++extra[jm[0] + 1]; });
   for (std::size_t i = 0; i < n; ++i) extra[i + 1] += extra[i];
   for (std::size_t i = 0; i < n; ++i) nl.offset[i + 1] += nl.offset[i] + (extra[i + 1] - extra[i]);
   resize_for_overwrite(nl.j, nl.offset[n]);
   fill.resize(n);
   for (std::size_t i = 0; i < n; ++i) fill[i] = static_cast<std::int64_t>(nl.offset[i + 1] - (extra[i + 1] - extra[i]));
-  for (std::size_t t = 0; t < team; ++t)
-    for (const auto& jm : missed[t]) nl.j[fill[jm[0]]++] = jm[1];
+  each_missed([&](const std::array<int, 2>& jm) { nl.j[fill[jm[0]]++] = jm[1]; });
 #pragma omp parallel for schedule(static) if (n >= parallel_threshold)
   for (std::size_t i = 0; i < n; ++i)
     std::copy_n(parts[owner[i]].begin() + local[i], nl.offset[i + 1] - nl.offset[i] - (extra[i + 1] - extra[i]),
