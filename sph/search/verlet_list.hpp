@@ -7,6 +7,7 @@
 #include <omp.h>
 
 #include "sph/core/isa.hpp"
+#include "sph/core/stretches.hpp"
 #include "sph/hydro/pairs.hpp"
 #include "sph/search/grid_search.hpp"
 
@@ -122,19 +123,30 @@ class VerletList {
     ++searches_;
   }
 
-  // active_ = the pairs of list_ within max(h_i, h_j). Each thread filters a contiguous range of i
-  // into its own buffer, then the buffers are joined in order: independent of the thread count.
-  // The buffers (160 MB a thread at N = 1e6 on 2 threads) are kept from one evaluation to the
-  // next. Allocated afresh, they made evolve's step there 1.34-1.43x the time of a step with a
-  // fresh search and no filter; kept, 0.97-1.08x (`sphv bench`, measured back to back).
+  // active_ = the pairs of list_ within max(h_i, h_j). The threads filter chunks of the rows
+  // (core/stretches.hpp: their own stretch, then the back of a slower thread's), each into its own
+  // buffer, and the chunks are joined in the rows' order: independent of the thread count and of
+  // which thread filtered which chunk. Thread 0's own chunks open the joined list: it filters
+  // them straight into it. The buffers (160 MB a thread at N = 1e6 on 2 threads) are kept from one
+  // evaluation to the next. Allocated afresh, they made evolve's step there 1.34-1.43x the time of
+  // a step with a fresh search and no filter; kept, 0.97-1.08x (`sphv bench`, measured back to back).
   void select(const std::vector<Vec<D>>& x, const std::vector<double>& h, const Box<D>& box) {
     const std::size_t n = x.size();
     const Vec<D> L = box.length(), wrap = box.wrap_factor();
+    const IsaPath path = loop_path<D>(isa_path());
     active_.offset.resize(n + 1);  // every entry is written below
     active_.offset[0] = 0;
     active_.order = list_.order;
     sites_.resize(n);  // every entry is written below
-    std::vector<std::size_t> base;
+    auto candidates = [&](std::size_t first, std::size_t last) {  // the rows' lengths
+      if (row_.empty()) return list_.offset[last] - list_.offset[first];
+      std::size_t c = 0;
+      for (std::size_t k = first; k < last; ++k) c += list_.offset[row_[k] + 1] - list_.offset[row_[k]];
+      return c;
+    };
+    std::vector<std::size_t> from;
+    std::vector<Chunk> in_order;
+    Stretches stretches;
 #pragma omp parallel if (n >= parallel_threshold)
     {
       const int nt = omp_get_num_threads(), t = omp_get_thread_num();
@@ -145,41 +157,62 @@ class VerletList {
       }
 #pragma omp single
       {
-        if (parts_.size() < static_cast<std::size_t>(nt)) parts_.resize(nt);
-        base.assign(nt + 1, 0);
+        if (parts_.size() < static_cast<std::size_t>(nt)) parts_.resize(nt), chunks_.resize(nt);
+        from.resize(nt + 1);
+        for (int u = 0; u <= nt; ++u) from[u] = n * u / nt;
+        stretches.reset(from.data(), nt);
       }
-      const std::size_t first = n * t / nt, last = n * (t + 1) / nt;
-      // Thread 0's pairs open the joined list: it filters straight into it, the others into
-      // their buffers (the copy of them all cost 1.8 % of evolve's step on one thread).
-      std::size_t bound = 0;  // the candidates of the range: its rows' lengths
-      if (row_.empty()) bound = list_.offset[last] - list_.offset[first];
-      else
-        for (std::size_t k = first; k < last; ++k) bound += list_.offset[row_[k] + 1] - list_.offset[row_[k]];
-      auto& js = t == 0 ? active_.j : parts_[t];
-      if (js.size() < bound) resize_for_overwrite(js, bound);
-      const std::size_t used =
-          select_pairs<D>(loop_path<D>(isa_path()), first, last, list_, row_.empty() ? nullptr : row_.data(),
-                          sites_.data(), L, wrap, js.data(), active_.offset.data());
-      base[t + 1] = used;
+      if (t == 0) {
+        const std::size_t own = candidates(from[0], from[1]);  // at most thread 0's own chunks
+        if (active_.j.size() < own) resize_for_overwrite(active_.j, own);
+      }
+      auto& buffer = parts_[t];
+      std::vector<Chunk>& log = chunks_[t];
+      log.clear();
+      std::size_t direct = 0, used = 0;  // pairs so far in active_.j (thread 0's own) and in the buffer
+      stretches.work(t, [&](std::size_t first, std::size_t last) {
+        const bool straight = t == 0 && first < from[1];
+        if (!straight && buffer.size() < used + candidates(first, last))
+          buffer.resize(std::max(2 * buffer.size(), used + candidates(first, last)));
+        std::size_t& at = straight ? direct : used;
+        const std::size_t count = select_pairs<D>(path, first, last, list_, row_.empty() ? nullptr : row_.data(),
+                                                  sites_.data(), L, wrap, (straight ? active_.j : buffer).data() + at,
+                                                  active_.offset.data());
+        log.push_back({first, last, at, count, 0, straight ? -1 : t});
+        at += count;
+      });
 #pragma omp barrier
 #pragma omp single
-      for (int k = 0; k < nt; ++k) base[k + 1] += base[k];
-      for (std::size_t i = first; i < last; ++i) active_.offset[i + 1] += base[t];
-#pragma omp single
-      active_.j.resize(base[nt]);  // keeps thread 0's pairs, at its start
-      // The other buffers copied after them by every thread, a share of each: copied by their own
-      // threads, thread 0 waited for them (2.9 % of its time, N = 10,648 on two threads).
-      for (int s = 1; s < nt; ++s) {
-        const std::size_t len = base[s + 1] - base[s], a = len * t / nt, b = len * (t + 1) / nt;
-        std::copy(parts_[s].begin() + a, parts_[s].begin() + b, active_.j.begin() + base[s] + a);
+      {
+        for (int u = 0; u < nt; ++u) in_order.insert(in_order.end(), chunks_[u].begin(), chunks_[u].end());
+        std::sort(in_order.begin(), in_order.end(), [](const Chunk& a, const Chunk& b) { return a.first < b.first; });
+        std::size_t total = 0;
+        for (Chunk& c : in_order) c.base = total, total += c.count;
+        active_.j.resize(total);  // keeps thread 0's own pairs, at its start
+      }
+      // Each chunk's offsets (counted from its start) moved to its place, its pairs copied there;
+      // the chunks dealt out in turn, so that each thread copies about as much.
+#pragma omp for schedule(static, 1)
+      for (std::size_t c = 0; c < in_order.size(); ++c) {
+        const Chunk& k = in_order[c];
+        for (std::size_t i = k.first; i < k.last; ++i) active_.offset[i + 1] += k.base;
+        if (k.thread >= 0) std::copy_n(parts_[k.thread].begin() + k.at, k.count, active_.j.begin() + k.base);
       }
     }
   }
 
+  // Rows first .. last - 1 filtered into the buffer of `thread` (-1: straight into active_.j) from
+  // `at`: count pairs, which go to base in the joined list.
+  struct Chunk {
+    std::size_t first, last, at, count, base;
+    int thread;
+  };
+
   double skin_, used_skin_ = 0.0;
   NeighbourList list_, active_;
   std::vector<int> row_;  // particle k's row of list_ (empty: row k), set by renumber_in_visiting_order
-  std::vector<std::vector<int, DefaultInitAllocator<int>>> parts_;  // select's buffers, threads 1, 2, ...
+  std::vector<std::vector<int, DefaultInitAllocator<int>>> parts_;  // select's buffers, a thread's each
+  std::vector<std::vector<Chunk>> chunks_;                             // the chunks each thread filtered
   std::vector<Site, DefaultInitAllocator<Site>> sites_;  // the positions and radii select reads
   GridSearchBuffers<D> buffers_;          // the search's, kept likewise
   std::vector<double> reach_;             // the padded radii searched
