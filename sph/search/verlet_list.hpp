@@ -166,14 +166,17 @@ class VerletList {
         const std::size_t own = candidates(from[0], from[1]);  // at most thread 0's own chunks
         if (active_.j.size() < own) resize_for_overwrite(active_.j, own);
       }
+      // Room for every candidate: a thread may filter any share of them, and its pages are touched
+      // only where it writes. Grown by doubling as needed instead, a buffer grew again whenever its
+      // thread took a larger share than before, each time faulting in a fresh block: evolve's step
+      // in `sphv bench` (N = 1e6, two threads) took 0.437 s, and 0.379 s with this room.
       auto& buffer = parts_[t];
+      if (buffer.size() < list_.j.size()) resize_for_overwrite(buffer, list_.j.size());
       std::vector<Chunk>& log = chunks_[t];
       log.clear();
       std::size_t direct = 0, used = 0;  // pairs so far in active_.j (thread 0's own) and in the buffer
       stretches.work(t, [&](std::size_t first, std::size_t last) {
         const bool straight = t == 0 && first < from[1];
-        if (!straight && buffer.size() < used + candidates(first, last))
-          buffer.resize(std::max(2 * buffer.size(), used + candidates(first, last)));
         std::size_t& at = straight ? direct : used;
         const std::size_t count = select_pairs<D>(path, first, last, list_, row_.empty() ? nullptr : row_.data(),
                                                   sites_.data(), L, wrap, (straight ? active_.j : buffer).data() + at,
