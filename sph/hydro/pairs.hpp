@@ -3,6 +3,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 #include <omp.h>
@@ -188,14 +189,13 @@ void for_each_particle(std::size_t n, const NeighbourList& nl, Visit&& visit) {
     particles_in_portable(k0, k1, nl, visit);
   };
   if (n < parallel_threshold) return stretch(0, n);
-  std::vector<std::size_t> from;  // thread t's stretch: from[t] .. from[t + 1] - 1
   Stretches stretches;
 #pragma omp parallel
   {
     const int nt = omp_get_num_threads(), t = omp_get_thread_num();
 #pragma omp single
     {
-      from.assign(nt + 1, n);
+      std::vector<std::size_t> from(nt + 1, n);  // thread t's stretch: from[t] .. from[t + 1] - 1
       from[0] = 0;
       const double total = static_cast<double>(nl.pairs() + n);
       double work = 0.0;
@@ -204,9 +204,9 @@ void for_each_particle(std::size_t n, const NeighbourList& nl, Visit&& visit) {
         work += static_cast<double>(nl.offset[i + 1] - nl.offset[i] + 1);
         for (; next < static_cast<std::size_t>(nt) && work >= total * next / nt; ++next) from[next] = k + 1;
       }
-      stretches.reset(from.data(), nt);
+      stretches.reset(std::move(from));
     }
-    stretches.work(t, stretch);
+    stretches.work(t, [&](std::size_t, std::size_t k0, std::size_t k1) { stretch(k0, k1); });
   }
 }
 

@@ -215,6 +215,7 @@ template <int D>
 [[gnu::flatten]] void grid_search(const std::vector<Vec<D>>& x, const std::vector<double>& h, const Box<D>& box,
                                   NeighbourList& nl, GridSearchBuffers<D>& buf) {
   const std::size_t n = x.size();
+  const std::size_t last_pairs = nl.j.size();  // the last search's, when nl is kept from it
   nl.offset.assign(n + 1, 0);
   nl.j.clear();
   nl.order.clear();
@@ -294,7 +295,7 @@ template <int D>
   // Counting sort by cell, stable (by index within a cell, as a serial sort): each thread counts
   // the cells of a contiguous range of indices, a cell's slots go to the threads in order, and each
   // thread places its range. Positions then copied in that order (wrapped into a periodic box).
-  auto& [coord, cell_of, start, fill, sorted, owner, xs, hs, local, extra, parts, missed, chunks] = buf;
+  auto& [coord, cell_of, start, fill, sorted, owner, xs, hs, local, extra, parts, missed] = buf;
   coord.resize(n);
   cell_of.resize(n);
   start.resize(ncell + 1);  // every entry is written below
@@ -399,35 +400,35 @@ template <int D>
   // the order) into its own buffer, noting each particle's place there. Nearly uniform h (cells
   // of h_max/2): every particle searches h_max and keeps |r_ij| < max(h_i, h_j) (candidates). Wide
   // h: i searches its own h_i, keeps |r_ij| < h_i and notes the pairs the other end misses as
-  // (j, i) in visiting order within a chunk (h_j <= |r_ij| < h_i), and the chunk where they start.
+  // (j, i) in visiting order (h_j <= |r_ij| < h_i), recording where each chunk's are.
   owner.resize(n);
   local.resize(n);
-  std::size_t team = 1;  // threads of this search (the buffers may have more, from an earlier one)
-  std::vector<std::size_t> from;
   Stretches stretches;
+  struct Missed {
+    std::size_t thread, at, count;  // missed[thread][at .. at + count - 1]
+  };
+  std::vector<Missed> chunk_missed;
 #pragma omp parallel if (n >= parallel_threshold)
   {
     const int nt = omp_get_num_threads(), t = omp_get_thread_num();
 #pragma omp single
     {
-      team = static_cast<std::size_t>(nt);
-      if (parts.size() < team) parts.resize(team), missed.resize(team), chunks.resize(team);
-      from.resize(team + 1);
-      for (std::size_t u = 0; u <= team; ++u) from[u] = n * u / team;
-      stretches.reset(from.data(), nt);
+      if (parts.size() < static_cast<std::size_t>(nt)) parts.resize(nt), missed.resize(nt);
+      stretches.reset(n, nt);
+      chunk_missed.resize(stretches.chunks());
     }
+    // Room for the last search's pairs, whatever share of them this thread lists (as in
+    // VerletList::select): a buffer grown by doubling faults in a fresh block each time.
     auto& js = parts[t];
     std::vector<std::array<int, 2>>& mt = missed[t];
-    std::vector<MissedChunk>& log = chunks[t];
-    log.clear();
-    js.resize(std::max(js.size(), n / team * 64));
+    if (js.size() < std::max(last_pairs, n / nt * 64)) resize_for_overwrite(js, std::max(last_pairs, n / nt * 64));
     std::size_t used = 0, nm = 0;
     std::vector<Run<D>> sten;
     std::size_t sten_size = 0;  // the stencil's candidates
     std::int64_t sten_of = -1;
     int sten_reach = 0;
-    auto scan = [&](auto wide, std::size_t first, std::size_t last) {  // wide: a compile-time choice
-      if constexpr (wide) log.push_back({first, nm});
+    auto scan = [&](auto wide, std::size_t c, std::size_t first, std::size_t last) {  // wide: known at compile time
+      const std::size_t nm0 = nm;
       for (std::size_t s = first; s < last; ++s) {
         const std::size_t i = sorted[s];
         const double hi = hs[s];
@@ -450,20 +451,17 @@ template <int D>
         }
         nl.offset[i + 1] = used - local[i];
       }
+      chunk_missed[c] = {static_cast<std::size_t>(t), nm0, nm - nm0};
     };
-    if (width < 0.5 * hmax) stretches.work(t, [&](std::size_t a, std::size_t b) { scan(std::true_type{}, a, b); });
-    else stretches.work(t, [&](std::size_t a, std::size_t b) { scan(std::false_type{}, a, b); });
-    mt.resize(nm);
-    log.push_back({n, nm});  // closes the last chunk
+    if (width < 0.5 * hmax)
+      stretches.work(t, [&](std::size_t c, std::size_t a, std::size_t b) { scan(std::true_type{}, c, a, b); });
+    else
+      stretches.work(t, [&](std::size_t c, std::size_t a, std::size_t b) { scan(std::false_type{}, c, a, b); });
   }
   // The missed pairs in the visiting order of the particles that found them: the chunks in order.
-  std::vector<std::array<std::size_t, 3>> in_order;  // {first particle, thread, index of the chunk}
-  for (std::size_t t = 0; t < team; ++t)
-    for (std::size_t c = 0; c + 1 < chunks[t].size(); ++c) in_order.push_back({chunks[t][c].first, t, c});
-  std::sort(in_order.begin(), in_order.end());
   auto each_missed = [&](auto&& f) {
-    for (const auto& [first, t, c] : in_order)
-      for (std::size_t k = chunks[t][c].at; k < chunks[t][c + 1].at; ++k) f(missed[t][k]);
+    for (const Missed& c : chunk_missed)
+      for (std::size_t k = c.at; k < c.at + c.count; ++k) f(missed[c.thread][k]);
   };
   // Counted per receiving particle.
   extra.assign(n + 1, 0);

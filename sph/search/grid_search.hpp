@@ -30,12 +30,6 @@ namespace sph {
 // caller from one search to the next (GridSearchBuffers): a run that searches every few steps then
 // does not allocate, zero and fault in tens of megabytes each time (measured: a fifth of evolve's
 // time at N = 125,000).
-// A chunk of the visiting order searched by one thread: its first particle, and where its pairs
-// for the other end start in that thread's buffer.
-struct MissedChunk {
-  std::size_t first, at;
-};
-
 template <int D>
 struct GridSearchBuffers {
   std::vector<std::array<int, D>> coord;
@@ -47,7 +41,6 @@ struct GridSearchBuffers {
   std::vector<std::size_t> local, extra;
   std::vector<std::vector<int, DefaultInitAllocator<int>>> parts;  // each thread's lists
   std::vector<std::vector<std::array<int, 2>>> missed;      // each thread's pairs for the other end
-  std::vector<std::vector<MissedChunk>> chunks;             // where each thread's chunks start in them
 };
 
 // The search into nl, with buffers kept from the last search (the list's own arrays as well).

@@ -130,6 +130,10 @@ class VerletList {
   // them straight into it. The buffers (160 MB a thread at N = 1e6 on 2 threads) are kept from one
   // evaluation to the next. Allocated afresh, they made evolve's step there 1.34-1.43x the time of
   // a step with a fresh search and no filter; kept, 0.97-1.08x (`sphv bench`, measured back to back).
+  // Each has room for every candidate: a thread may filter any share of them, and its pages are
+  // touched only where it writes. Grown by doubling as needed instead, a buffer grew again whenever
+  // its thread took a larger share than before, each time faulting in a fresh block: evolve's step
+  // in `sphv bench` (N = 1e6, two threads) took 0.437 s, and 0.379 s with this room.
   void select(const std::vector<Vec<D>>& x, const std::vector<double>& h, const Box<D>& box) {
     const std::size_t n = x.size();
     const Vec<D> L = box.length(), wrap = box.wrap_factor();
@@ -138,15 +142,9 @@ class VerletList {
     active_.offset[0] = 0;
     active_.order = list_.order;
     sites_.resize(n);  // every entry is written below
-    auto candidates = [&](std::size_t first, std::size_t last) {  // the rows' lengths
-      if (row_.empty()) return list_.offset[last] - list_.offset[first];
-      std::size_t c = 0;
-      for (std::size_t k = first; k < last; ++k) c += list_.offset[row_[k] + 1] - list_.offset[row_[k]];
-      return c;
-    };
-    std::vector<std::size_t> from;
-    std::vector<Chunk> in_order;
+    if (active_.j.size() < list_.j.size()) resize_for_overwrite(active_.j, list_.j.size());
     Stretches stretches;
+    std::vector<Chunk> chunk;  // what became of each chunk of the rows
 #pragma omp parallel if (n >= parallel_threshold)
     {
       const int nt = omp_get_num_threads(), t = omp_get_thread_num();
@@ -157,57 +155,45 @@ class VerletList {
       }
 #pragma omp single
       {
-        if (parts_.size() < static_cast<std::size_t>(nt)) parts_.resize(nt), chunks_.resize(nt);
-        from.resize(nt + 1);
-        for (int u = 0; u <= nt; ++u) from[u] = n * u / nt;
-        stretches.reset(from.data(), nt);
+        if (parts_.size() < static_cast<std::size_t>(nt)) parts_.resize(nt);
+        stretches.reset(n, nt);
+        chunk.resize(stretches.chunks());
       }
-      if (t == 0) {
-        const std::size_t own = candidates(from[0], from[1]);  // at most thread 0's own chunks
-        if (active_.j.size() < own) resize_for_overwrite(active_.j, own);
-      }
-      // Room for every candidate: a thread may filter any share of them, and its pages are touched
-      // only where it writes. Grown by doubling as needed instead, a buffer grew again whenever its
-      // thread took a larger share than before, each time faulting in a fresh block: evolve's step
-      // in `sphv bench` (N = 1e6, two threads) took 0.437 s, and 0.379 s with this room.
       auto& buffer = parts_[t];
       if (buffer.size() < list_.j.size()) resize_for_overwrite(buffer, list_.j.size());
-      std::vector<Chunk>& log = chunks_[t];
-      log.clear();
       std::size_t direct = 0, used = 0;  // pairs so far in active_.j (thread 0's own) and in the buffer
-      stretches.work(t, [&](std::size_t first, std::size_t last) {
-        const bool straight = t == 0 && first < from[1];
+      stretches.work(t, [&](std::size_t c, std::size_t first, std::size_t last) {
+        const bool straight = t == 0 && stretches.owns(0, c);
         std::size_t& at = straight ? direct : used;
         const std::size_t count = select_pairs<D>(path, first, last, list_, row_.empty() ? nullptr : row_.data(),
                                                   sites_.data(), L, wrap, (straight ? active_.j : buffer).data() + at,
                                                   active_.offset.data());
-        log.push_back({first, last, at, count, 0, straight ? -1 : t});
+        chunk[c] = {at, count, 0, straight ? -1 : t};
         at += count;
       });
 #pragma omp barrier
 #pragma omp single
       {
-        for (int u = 0; u < nt; ++u) in_order.insert(in_order.end(), chunks_[u].begin(), chunks_[u].end());
-        std::sort(in_order.begin(), in_order.end(), [](const Chunk& a, const Chunk& b) { return a.first < b.first; });
         std::size_t total = 0;
-        for (Chunk& c : in_order) c.base = total, total += c.count;
+        for (Chunk& k : chunk) k.base = total, total += k.count;
         active_.j.resize(total);  // keeps thread 0's own pairs, at its start
       }
       // Each chunk's offsets (counted from its start) moved to its place, its pairs copied there;
       // the chunks dealt out in turn, so that each thread copies about as much.
 #pragma omp for schedule(static, 1)
-      for (std::size_t c = 0; c < in_order.size(); ++c) {
-        const Chunk& k = in_order[c];
-        for (std::size_t i = k.first; i < k.last; ++i) active_.offset[i + 1] += k.base;
+      for (std::size_t c = 0; c < chunk.size(); ++c) {
+        const Chunk& k = chunk[c];
+        const auto [first, last] = stretches.range(c);
+        for (std::size_t i = first; i < last; ++i) active_.offset[i + 1] += k.base;
         if (k.thread >= 0) std::copy_n(parts_[k.thread].begin() + k.at, k.count, active_.j.begin() + k.base);
       }
     }
   }
 
-  // Rows first .. last - 1 filtered into the buffer of `thread` (-1: straight into active_.j) from
-  // `at`: count pairs, which go to base in the joined list.
+  // A chunk of rows filtered into the buffer of `thread` (-1: straight into active_.j) from `at`:
+  // count pairs, which go to base in the joined list.
   struct Chunk {
-    std::size_t first, last, at, count, base;
+    std::size_t at, count, base;
     int thread;
   };
 
@@ -215,7 +201,6 @@ class VerletList {
   NeighbourList list_, active_;
   std::vector<int> row_;  // particle k's row of list_ (empty: row k), set by renumber_in_visiting_order
   std::vector<std::vector<int, DefaultInitAllocator<int>>> parts_;  // select's buffers, a thread's each
-  std::vector<std::vector<Chunk>> chunks_;                             // the chunks each thread filtered
   std::vector<Site, DefaultInitAllocator<Site>> sites_;  // the positions and radii select reads
   GridSearchBuffers<D> buffers_;          // the search's, kept likewise
   std::vector<double> reach_;             // the padded radii searched

@@ -1,6 +1,6 @@
 // The stretches the pair loops share among threads (sph/core/stretches.hpp): every index handed
-// out once, the chunks of a stretch in order from its front, and a slow thread's stretch finished
-// by the others.
+// out once, in chunks numbered in index order, the chunks of a stretch in order from its front,
+// and a slow thread's stretch finished by the others.
 #include <catch2/catch.hpp>
 #include <omp.h>
 
@@ -19,7 +19,8 @@ TEST_CASE("stretches hand out every index once, and a slow thread's work to the 
   std::vector<char> in_order(threads, 1);  // checked after the team: Catch's checks are not thread-safe
   int team = 0;
   sph::Stretches stretches;
-  stretches.reset(from.data(), threads);
+  stretches.reset(from);
+  std::vector<std::atomic<int>> taken(stretches.chunks());
 #pragma omp parallel num_threads(threads)
   {
     const int t = omp_get_thread_num();
@@ -28,11 +29,22 @@ TEST_CASE("stretches hand out every index once, and a slow thread's work to the 
     // Thread 0 starts late: the others finish their own and take the back of its stretch.
     if (t == 0) std::this_thread::sleep_for(std::chrono::milliseconds(200));
     std::size_t next = from[t];  // where thread t's next chunk of its own stretch starts
-    stretches.work(t, [&](std::size_t k0, std::size_t k1) {
-      if (k0 >= from[t] && k0 < from[t + 1]) in_order[t] = in_order[t] && k0 == next, next = k1;
+    stretches.work(t, [&](std::size_t c, std::size_t k0, std::size_t k1) {
+      if (stretches.owns(t, c)) in_order[t] = in_order[t] && k0 == next, next = k1;
+      taken[c]++;
       for (std::size_t k = k0; k < k1; ++k) visits[k]++, by[k] = t;
     });
   }
+  // The chunks tile the range in their numbers' order, each taken once, and range(c) names them.
+  std::size_t end = 0;
+  for (std::size_t c = 0; c < stretches.chunks(); ++c) {
+    const auto [k0, k1] = stretches.range(c);
+    CHECK(k0 == end);
+    CHECK(k1 > k0);
+    CHECK(taken[c] == 1);
+    end = k1;
+  }
+  CHECK(end == from.back());
   int twice = 0, never = 0;
   for (const auto& v : visits) twice += v > 1, never += v == 0;
   CHECK(twice == 0);
