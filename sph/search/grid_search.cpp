@@ -417,12 +417,16 @@ template <int D>
       stretches.reset(n, nt);
       chunk_missed.resize(stretches.chunks());
     }
-    // Room for the last search's pairs, whatever share of them this thread lists (as in
-    // VerletList::select): a buffer grown by doubling faults in a fresh block each time.
+    // Room for all the last search's pairs, whatever share of them this thread lists (as in
+    // VerletList::select); short of room (a first search), grown to hold every particle's pairs at
+    // the rate listed so far, with an eighth to spare. A buffer reallocated at a later search
+    // faults its pages in again: grown by doubling, then sized to the last search's pairs, it made
+    // the second search of a run take 0.78 s against 0.21 s for the later ones (N = 1e6, two
+    // threads, 90,000 page faults against 1,500-4,600; measured).
     auto& js = parts[t];
     std::vector<std::array<int, 2>>& mt = missed[t];
     if (js.size() < std::max(last_pairs, n / nt * 64)) resize_for_overwrite(js, std::max(last_pairs, n / nt * 64));
-    std::size_t used = 0, nm = 0;
+    std::size_t used = 0, nm = 0, scanned = 0;  // pairs and particles this thread has listed
     std::vector<Run<D>> sten;
     std::size_t sten_size = 0;  // the stencil's candidates
     std::int64_t sten_of = -1;
@@ -440,7 +444,9 @@ template <int D>
         }
         owner[i] = t;
         local[i] = used;
-        if (used + sten_size + lanes > js.size()) js.resize(2 * js.size() + sten_size + lanes);
+        if (used + sten_size + lanes > js.size())
+          js.resize(std::max(2 * js.size(), used / std::max<std::size_t>(scanned, 1) * (n + n / 8)) + sten_size + lanes);
+        ++scanned;
         if constexpr (wide) {
           if (nm + sten_size > mt.size()) mt.resize(2 * mt.size() + sten_size);
           const Found f = own_reach_on(path, s, static_cast<int>(i), sten, view, js.data() + used, mt.data() + nm);
