@@ -36,20 +36,27 @@ struct Row {
   double pairs;  // pair interactions (particle-particle and particle-node for the tree)
 };
 
-// Best of a few repetitions (three for runs over a second): the machine's noise only adds time.
-// Never one: the first run pays the first touch of buffers a run keeps (at N = 1e6 the search's
-// single run took 2.07 s on one thread, a warm one 0.51 s on two; measured). Nor two: on two
-// threads the second wide-h search still faulted in 22,000 pages (0.40 s, the third 0.29 s; a
+// f's least time on each of the thread counts, which take turns run by run, so that all of them
+// see the same moments of the machine: its speed drifts by up to 1.5x over minutes, and one of its
+// two cores at times runs a third slower than the other for seconds. Run in turn per N instead
+// (every stage on one thread, then every stage on two), a speed-up compared runs a minute apart.
+// The least of a few rounds (three when a round takes over a second, up to five): the noise only
+// adds time. Never one: the first run pays the first touch of buffers a run keeps (at N = 1e6 the
+// search's single run took 2.07 s on one thread, a warm one 0.51 s on two; measured). Nor two: on
+// two threads the second wide-h search still faulted in 22,000 pages (0.40 s, the third 0.29 s; a
 // thread writes past where it stopped in the first run, whose page faults slowed it).
-double best_time(const std::function<void()>& f) {
-  double best = 1e300, total = 0.0;
-  for (int k = 0; k < 5 && (k < 3 || total < 1.0); ++k) {
-    const auto t0 = std::chrono::steady_clock::now();
-    f();
-    const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    best = std::min(best, t);
-    total += t;
-  }
+Times best_times(const std::vector<int>& threads, const std::function<void()>& f) {
+  Times best(threads.size(), 1e300);
+  double total = 0.0;
+  for (int k = 0; k < 5 && (k < 3 || total < 1.0); ++k)
+    for (std::size_t i = 0; i < threads.size(); ++i) {
+      omp_set_num_threads(threads[i]);
+      const auto t0 = std::chrono::steady_clock::now();
+      f();
+      const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      best[i] = std::min(best[i], t);
+      total += t;
+    }
   return best;
 }
 
@@ -60,20 +67,23 @@ sph::Particles<3> uniform_gas(long n, sph::Box<3>& box) {
   return sph::lattice<3>(side, box, 1.0, 2.4, 0.1, 7);
 }
 
-std::vector<Row> measure(long n_wanted, int threads, const BenchOptions& o, double& bytes_per_particle,
-                         double& searches_per_step) {
-  omp_set_num_threads(threads);
+// Every stage at N ~ n_wanted on each of o.threads (best_times).
+std::vector<Row> measure(long n_wanted, const BenchOptions& o, double& bytes_per_particle, double& searches_per_step) {
+  const Timer timer = [&](const std::function<void()>& f) { return best_times(o.threads, f); };
   std::vector<Row> rows;
   sph::Box<3> box;
   sph::Particles<3> p = uniform_gas(n_wanted, box);
   const long n = static_cast<long>(p.size());
+  auto add = [&](const std::string& stage, const Times& t, double pairs) {
+    for (std::size_t i = 0; i < t.size(); ++i) rows.push_back({stage, n, o.threads[i], t[i], pairs});
+  };
   // Searches into kept buffers, as a run's Verlet list does. With fresh buffers every time, the
   // page faults of two threads contend: the wide search below took 0.131 s on one thread and
   // 0.167 s on two (N = 125,000, measured), against 0.123 s and 0.067 s with kept buffers.
   sph::NeighbourList nl;
   sph::GridSearchBuffers<3> buf;
-  rows.push_back({"neighbour search", n, threads, best_time([&] { sph::grid_search<3>(p.x, p.h, box, nl, buf); }),
-                  static_cast<double>(nl.pairs())});
+  const Times search = timer([&] { sph::grid_search<3>(p.x, p.h, box, nl, buf); });  // before nl.pairs() is read
+  add("neighbour search", search, static_cast<double>(nl.pairs()));
   // The same gas with the support radius of the central 0.4 % (r < 0.1) four times larger, like a
   // blast wave's hot, rarefied centre: the search's cost should follow the bulk's h, not the largest.
   std::vector<double> wide = p.h;
@@ -82,40 +92,37 @@ std::vector<Row> measure(long n_wanted, int threads, const BenchOptions& o, doub
   if (*std::max_element(wide.begin(), wide.end()) < 0.5) {  // the periodic box's limit
     sph::NeighbourList nw;
     sph::GridSearchBuffers<3> bw;
-    rows.push_back({"neighbour search, central h x4", n, threads,
-                    best_time([&] { sph::grid_search<3>(p.x, wide, box, nw, bw); }), static_cast<double>(nw.pairs())});
+    const Times t = timer([&] { sph::grid_search<3>(p.x, wide, box, nw, bw); });
+    add("neighbour search, central h x4", t, static_cast<double>(nw.pairs()));
   }
   sph::Components<3> xs;  // kept, as a scene keeps its own (sph/hydro/scene.hpp)
-  rows.push_back({"density (27)", n, threads, best_time([&] { sph::density_summation<3>(p, nl, box, xs); }),
-                  static_cast<double>(nl.pairs())});
-  const HydroTimes hydro = time_hydro_step(p, box, best_time);
-  rows.push_back({"hydro forces", n, threads, hydro.forces, hydro.pairs});
-  rows.push_back({"full hydro step", n, threads, hydro.step, hydro.pairs});
-  rows.push_back({"full hydro step, search every step", n, threads, hydro.step_fresh_search, hydro.pairs});
+  add("density (27)", timer([&] { sph::density_summation<3>(p, nl, box, xs); }), static_cast<double>(nl.pairs()));
+  const HydroTimes hydro = time_hydro_step(p, box, timer);
+  add("hydro forces", hydro.forces, hydro.pairs);
+  add("full hydro step", hydro.step, hydro.pairs);
+  add("full hydro step, search every step", hydro.step_fresh_search, hydro.pairs);
   if (n <= o.shuffled_max) {  // particles stored in no spatial order, as another code's snapshot may hold them
     const sph::Particles<3> q = shuffled(p);
-    rows.push_back({"full hydro step, stored shuffled", n, threads, time_evolve_step(q, box, best_time).first,
-                    hydro.pairs});
-    rows.push_back({"full hydro step, stored shuffled, no reordering", n, threads,
-                    time_evolve_step(q, box, best_time, 0).first, hydro.pairs});
+    add("full hydro step, stored shuffled", time_evolve_step(q, box, timer).first, hydro.pairs);
+    add("full hydro step, stored shuffled, no reordering", time_evolve_step(q, box, timer, 0).first, hydro.pairs);
   }
   searches_per_step = hydro.searches_per_step;
   bytes_per_particle = hydro.bytes_per_particle;
   if (n <= o.tree_max) {
     sph::Tree<3> tree;
-    rows.push_back({"tree build", n, threads, best_time([&] { tree = sph::build_tree<3>(p.x, p.m); }), 0.0});
+    add("tree build", timer([&] { tree = sph::build_tree<3>(p.x, p.m); }), 0.0);
     sph::GravityField g;
     const sph::GravityOptions go{.theta = 0.5, .eps = 0.01};
-    const double t = best_time([&] { g = sph::tree_gravity(tree, p.x, p.m, go); });
+    const Times t = timer([&] { g = sph::tree_gravity(tree, p.x, p.m, go); });
     double inter = 0.0;
     for (long k : g.interactions) inter += static_cast<double>(k);
-    rows.push_back({"tree gravity (quadrupole, theta 0.5)", n, threads, t, inter});
+    add("tree gravity (quadrupole, theta 0.5)", t, inter);
   }
   if (n <= o.direct_max) {
     std::vector<double> x(n), y(n), z(n);
     for (long i = 0; i < n; ++i) x[i] = p.x[i][0], y[i] = p.x[i][1], z[i] = p.x[i][2];
-    rows.push_back({"direct-sum gravity", n, threads,
-                    best_time([&] { reference::direct_sum(x, y, z, p.m, 1.0, 0.01); }), double(n) * double(n - 1)});
+    add("direct-sum gravity", timer([&] { reference::direct_sum(x, y, z, p.m, 1.0, 0.01); }),
+        double(n) * double(n - 1));
   }
   return rows;
 }
@@ -137,7 +144,7 @@ void bench(const BenchOptions& o) {
   auto of_peak = [&](const Row& r) {
     return r.stage == "hydro forces" ? force_pair_flops * r.pairs / r.seconds / peak[r.threads].flops_per_s : NAN;
   };
-  // A stage's time on one thread over its time on t threads, from the same N measured just before
+  // A stage's time on one thread over its time on t threads, from the same N, timed in turn with it
   // (NaN for one thread, or without a one-thread run).
   std::map<std::pair<std::string, long>, double> one_thread;
   auto speedup = [&](const Row& r) {
@@ -146,28 +153,25 @@ void bench(const BenchOptions& o) {
   };
   std::printf("%-48s %9s %7s %10s %14s %14s %9s %8s %8s\n", "stage", "N", "threads", "seconds", "updates/s", "pairs/s",
               "ns/pair", "speed-up", "of peak");
-  // Each N on every thread count in turn: the speed-up compares runs minutes apart at most, not a
-  // whole pass (this machine's speed drifts by up to 1.5x over minutes).
-  for (long n : o.sizes)
-    for (int threads : o.threads) {
-      double b = 0.0, searches = 0.0;
-      for (const Row& r : measure(n, threads, o, b, searches)) {
-        rows.push_back(r);
-        if (r.threads == 1) one_thread[{r.stage, r.n}] = r.seconds;
-        std::printf("%-48s %9ld %7d %10.4f %14.3e %14.3e %9.2f", r.stage.c_str(), r.n, r.threads, r.seconds,
-                    r.n / r.seconds, r.pairs / r.seconds, r.pairs > 0.0 ? 1e9 * r.seconds / r.pairs : 0.0);
-        if (std::isfinite(speedup(r))) std::printf(" %7.2fx", speedup(r));
-        else std::printf(" %8s", "");
-        if (std::isfinite(of_peak(r))) std::printf(" %7.1f%%", 100.0 * of_peak(r));
-        std::printf("\n");
-        std::fflush(stdout);
-      }
-      bytes[rows.back().n] = b;
-      searches_per_step[rows.back().n] = searches;
-      // Measured: the process's peak over ascending N is set by the largest N so far (recorded after
-      // the first thread count's run of each N).
-      if (threads == o.threads.front()) resident[rows.back().n] = peak_resident_bytes() / rows.back().n;
+  for (long n : o.sizes) {
+    double b = 0.0, searches = 0.0;
+    for (const Row& r : measure(n, o, b, searches)) {
+      rows.push_back(r);
+      if (r.threads == 1) one_thread[{r.stage, r.n}] = r.seconds;
+      std::printf("%-48s %9ld %7d %10.4f %14.3e %14.3e %9.2f", r.stage.c_str(), r.n, r.threads, r.seconds,
+                  r.n / r.seconds, r.pairs / r.seconds, r.pairs > 0.0 ? 1e9 * r.seconds / r.pairs : 0.0);
+      if (std::isfinite(speedup(r))) std::printf(" %7.2fx", speedup(r));
+      else std::printf(" %8s", "");
+      if (std::isfinite(of_peak(r))) std::printf(" %7.1f%%", 100.0 * of_peak(r));
+      std::printf("\n");
+      std::fflush(stdout);
     }
+    bytes[rows.back().n] = b;
+    searches_per_step[rows.back().n] = searches;
+    // Measured: the process's peak over ascending N is set by the largest N so far (recorded after
+    // each N's runs on every thread count).
+    resident[rows.back().n] = peak_resident_bytes() / rows.back().n;
+  }
 
   // Cost against N with fitted slopes (GSL least squares on log-log), at the most threads.
   const int tmax = *std::max_element(o.threads.begin(), o.threads.end());

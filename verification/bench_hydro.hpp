@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <tuple>
 #include <utility>
+#include <vector>
 
 #include "sph/core/verdict.hpp"
 #include "sph/density/terms.hpp"
@@ -36,8 +37,14 @@ constexpr double force_pair_flops = 99.0;
 // The steps over which the full step is timed (time_hydro_step).
 constexpr long full_step_window = 32;
 
+// A stage's time on each of the thread counts benchmarked, in their order, and what measures it
+// (verification/bench.cpp: the thread counts take turns run by run).
+using Times = std::vector<double>;
+using Timer = std::function<Times(const std::function<void()>&)>;
+
 struct HydroTimes {
-  double forces, step, step_fresh_search, pairs, bytes_per_particle, searches_per_step;
+  Times forces, step, step_fresh_search;
+  double pairs, bytes_per_particle, searches_per_step;
 };
 
 // The scene of the full step: summation density (27), the forces' terms.
@@ -54,9 +61,8 @@ using StepScene = sph::Scene<3, sph::SummationDensity<3>, sph::EquationOfState<3
 // Both runs are timed alike, after an untimed run that pays the process's first touch of the
 // buffers (a cold first run took 1.03 s against 0.52 s warm at N = 125,000 on one thread, and made
 // the difference too small). Returns the step's time and the searches a step.
-inline std::pair<double, double> time_evolve_step(const sph::Particles<3>& p, const sph::Box<3>& box,
-                                                  const std::function<double(const std::function<void()>&)>& timer,
-                                                  long reorder_every = sph::HydroControls{}.reorder_every) {
+inline std::pair<Times, double> time_evolve_step(const sph::Particles<3>& p, const sph::Box<3>& box, const Timer& timer,
+                                                 long reorder_every = sph::HydroControls{}.reorder_every) {
   using namespace sph;
   StepScene step;
   HydroControls run;
@@ -77,9 +83,11 @@ inline std::pair<double, double> time_evolve_step(const sph::Particles<3>& p, co
   // threads, measured).
   evolve_for(1);
   long one = 0, more = 0;  // searches: the same in every repetition
-  const double t_one = timer([&] { one = evolve_for(1); });
-  const double t_more = timer([&] { more = evolve_for(1 + full_step_window); });
-  return {(t_more - t_one) / full_step_window, static_cast<double>(more - one) / full_step_window};
+  const Times t_one = timer([&] { one = evolve_for(1); });
+  const Times t_more = timer([&] { more = evolve_for(1 + full_step_window); });
+  Times per_step(t_one.size());
+  for (std::size_t k = 0; k < per_step.size(); ++k) per_step[k] = (t_more[k] - t_one[k]) / full_step_window;
+  return {per_step, static_cast<double>(more - one) / full_step_window};
 }
 
 // The particles of p stored in a random order, as a snapshot of another code may hold them.
@@ -96,8 +104,7 @@ inline sph::Particles<3> shuffled(const sph::Particles<3>& p) {
   return q;
 }
 
-inline HydroTimes time_hydro_step(sph::Particles<3>& p, const sph::Box<3>& box,
-                                  const std::function<double(const std::function<void()>&)>& timer) {
+inline HydroTimes time_hydro_step(sph::Particles<3>& p, const sph::Box<3>& box, const Timer& timer) {
   using namespace sph;
   std::mt19937_64 rng(3);
   std::normal_distribution<double> g(0.0, 0.1);
