@@ -58,12 +58,20 @@ def bench_body(results, out):
                     f"over the {b['full_step_window']} steps after the first. \"Stored shuffled\": the same step from "
                     f"the particles stored in a random order (as another code's snapshot may hold them), with evolve's "
                     f"reordering of their storage along the search's cells, and without it.</p>")
-    body.append("<p>Speed-up: a stage's time on one thread over its time on this many, each N measured on every "
-                "thread count in turn.</p>")
+    body.append("<p>Speed-up: a stage's time on one thread over its time on this many, the thread counts taking turns "
+                "run by run.</p>")
     pk = b.get("peak")
     if pk:
+        def at(n, runs):  # one N's peak on each thread count, before / after its runs, and as a multiple of one thread's
+            one = runs.get("1")
+            return f"N={n}: " + ", ".join(
+                f"{t} thread(s) {v[0]:.3e} / {v[1]:.3e} flop/s" +
+                (f" ({v[0] / one[0]:.2f}x / {v[1] / one[1]:.2f}x one thread's)" if one and t != "1" else "")
+                for t, v in runs.items())
         body.append(f"<p>Share of peak: the hydro forces at {pk['force_pair_flops']:.0f} floating-point operations a pair "
                     f"(counted from the source, verification/bench_hydro.hpp) against this CPU's double-precision peak, "
-                    f"measured ({e(pk['method'])}; {e(pk['isa'])}): " +
-                    ", ".join(f"{k} thread(s) {v:.3e} flop/s" for k, v in pk["flops_per_s"].items()) + ".</p>")
+                    f"measured ({e(pk['method'])}; {e(pk['isa'])}), the larger of before and after. The peak on several "
+                    f"threads against one thread's is what the machine gave the speed-ups (a virtual machine's cores "
+                    f"can give well short of their number): " +
+                    "; ".join(at(n, runs) for n, runs in pk["flops_per_s"].items()) + ".</p>")
     return "".join(body)
