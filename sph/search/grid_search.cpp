@@ -215,7 +215,6 @@ template <int D>
 [[gnu::flatten]] void grid_search(const std::vector<Vec<D>>& x, const std::vector<double>& h, const Box<D>& box,
                                   NeighbourList& nl, GridSearchBuffers<D>& buf) {
   const std::size_t n = x.size();
-  const std::size_t last_pairs = nl.j.size();  // the last search's, when nl is kept from it
   nl.offset.assign(n + 1, 0);
   nl.j.clear();
   nl.order.clear();
@@ -417,22 +416,22 @@ template <int D>
       stretches.reset(n, nt);
       chunk_missed.resize(stretches.chunks());
     }
-    // Room for all the last search's pairs, whatever share of them this thread lists (as in
-    // VerletList::select); short of room (a first search), grown to hold every particle's pairs at
-    // the rate listed so far, with an eighth to spare. A buffer reallocated at a later search
-    // faults its pages in again: grown by doubling, then sized to the last search's pairs, it made
-    // the second search of a run take 0.78 s against 0.21 s for the later ones (N = 1e6, two
-    // threads, 90,000 page faults against 1,500-4,600; measured).
+    // A thread short of room grows its buffer to hold every particle's pairs at the rate it has
+    // listed so far, with an eighth to spare: whatever share of them it lists at a later search
+    // (it takes chunks from the others), the buffer then need not be reallocated, which faults its
+    // pages in again. Grown by doubling, then sized to the last search's pairs, it made the second
+    // search of a run take 0.78 s against 0.21 s for the later ones (N = 1e6, two threads, 90,000
+    // page faults against 1,500-4,600; measured).
     auto& js = parts[t];
     std::vector<std::array<int, 2>>& mt = missed[t];
-    if (js.size() < std::max(last_pairs, n / nt * 64)) resize_for_overwrite(js, std::max(last_pairs, n / nt * 64));
+    if (js.size() < n / nt * 64) resize_for_overwrite(js, n / nt * 64);
     std::size_t used = 0, nm = 0, scanned = 0;  // pairs and particles this thread has listed
     std::vector<Run<D>> sten;
     std::size_t sten_size = 0;  // the stencil's candidates
     std::int64_t sten_of = -1;
     int sten_reach = 0;
     auto scan = [&](auto wide, std::size_t c, std::size_t first, std::size_t last) {  // wide: known at compile time
-      const std::size_t nm0 = nm;
+      const std::size_t nm0 = nm;  // this chunk's missed pairs start here (wide h)
       for (std::size_t s = first; s < last; ++s) {
         const std::size_t i = sorted[s];
         const double hi = hs[s];
@@ -457,7 +456,7 @@ template <int D>
         }
         nl.offset[i + 1] = used - local[i];
       }
-      chunk_missed[c] = {static_cast<std::size_t>(t), nm0, nm - nm0};
+      if constexpr (wide) chunk_missed[c] = {static_cast<std::size_t>(t), nm0, nm - nm0};
     };
     if (width < 0.5 * hmax)
       stretches.work(t, [&](std::size_t c, std::size_t a, std::size_t b) { scan(std::true_type{}, c, a, b); });
