@@ -55,7 +55,7 @@ def bench_body(results, out):
                 ", ".join(f"N={k}: {v:.2f}" for k, v in b.get("searches_per_step", {}).items()) + ".</p>")
     if "full_step_window" in b:
         body.append(f"<p>Full hydro step: evolve's own (Courant step, neighbour lists reused while they cover), timed "
-                    f"over the {b['full_step_window']} steps after the first. \"Stored shuffled\": the same step from "
+                    f"over the {b['full_step_window']} steps after the first, each step at its least over the runs. \"Stored shuffled\": the same step from "
                     f"the particles stored in a random order (as another code's snapshot may hold them), with evolve's "
                     f"reordering of their storage along the search's cells, and without it.</p>")
     body.append("<p>Speed-up: a stage's time on one thread over its time on this many, the thread counts taking turns "

@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <numeric>
 #include <string>
 #include <utility>
 
@@ -37,28 +38,29 @@ struct Row {
   double pairs;  // pair interactions (particle-particle and particle-node for the tree)
 };
 
-// f's least time on each of the thread counts, which take turns run by run, so that all of them
-// see the same moments of the machine: its speed drifts by up to 1.5x over minutes, and one of its
-// two cores at times runs a third slower than the other for seconds. Run in turn per N instead
-// (every stage on one thread, then every stage on two), a speed-up compared runs a minute apart.
-// The least of a few rounds (three when a round takes over a second, up to five): the noise only
-// adds time. Never one: the first run pays the first touch of buffers a run keeps (at N = 1e6 the
-// search's single run took 2.07 s on one thread, a warm one 0.51 s on two; measured). Nor two: on
-// two threads the second wide-h search still faulted in 22,000 pages (0.40 s, the third 0.29 s; a
-// thread writes past where it stopped in the first run, whose page faults slowed it).
-Times best_times(const std::vector<int>& threads, const std::function<void()>& f) {
-  Times best(threads.size(), 1e300);
+// f's time on each of the thread counts, which take turns run by run, so that all of them see the
+// same moments of the machine: its speed drifts by up to 1.5x over minutes, and one of its two cores
+// at times runs a third slower than the other for seconds. Run in turn per N instead (every stage on
+// one thread, then every stage on two), a speed-up compared runs a minute apart. Each of f's parts
+// (Parts) at its least over a few rounds (three when a round takes over a second, up to five), the
+// parts summed: the noise only adds time. Never one round: the first run pays the first touch of
+// buffers a run keeps (at N = 1e6 the search's single run took 2.07 s on one thread, a warm one
+// 0.51 s on two; measured). Nor two: on two threads the second wide-h search still faulted in 22,000
+// pages (0.40 s, the third 0.29 s; a thread writes past where it stopped in the first run, whose page
+// faults slowed it).
+Times best_times(const std::vector<int>& threads, const std::function<Parts()>& f) {
+  std::vector<Parts> best(threads.size());
   double total = 0.0;
   for (int k = 0; k < 5 && (k < 3 || total < 1.0); ++k)
     for (std::size_t i = 0; i < threads.size(); ++i) {
       omp_set_num_threads(threads[i]);
-      const auto t0 = std::chrono::steady_clock::now();
-      f();
-      const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      best[i] = std::min(best[i], t);
-      total += t;
+      const Parts t = f();
+      if (k == 0) best[i] = t;
+      for (std::size_t j = 0; j < t.size(); ++j) best[i][j] = std::min(best[i][j], t[j]), total += t[j];
     }
-  return best;
+  Times sum(threads.size());
+  for (std::size_t i = 0; i < threads.size(); ++i) sum[i] = std::accumulate(best[i].begin(), best[i].end(), 0.0);
+  return sum;
 }
 
 // 3D uniform gas: a lattice jittered by 0.1 dx, support radius 2.4 dx (about 60 neighbours).
@@ -70,7 +72,7 @@ sph::Particles<3> uniform_gas(long n, sph::Box<3>& box) {
 
 // Every stage at N ~ n_wanted on each of o.threads (best_times).
 std::vector<Row> measure(long n_wanted, const BenchOptions& o, double& bytes_per_particle, double& searches_per_step) {
-  const Timer timer = [&](const std::function<void()>& f) { return best_times(o.threads, f); };
+  const Timer timer = [&](const std::function<Parts()>& f) { return best_times(o.threads, f); };
   std::vector<Row> rows;
   sph::Box<3> box;
   sph::Particles<3> p = uniform_gas(n_wanted, box);
@@ -83,7 +85,7 @@ std::vector<Row> measure(long n_wanted, const BenchOptions& o, double& bytes_per
   // 0.167 s on two (N = 125,000, measured), against 0.123 s and 0.067 s with kept buffers.
   sph::NeighbourList nl;
   sph::GridSearchBuffers<3> buf;
-  const Times search = timer([&] { sph::grid_search<3>(p.x, p.h, box, nl, buf); });  // before nl.pairs() is read
+  const Times search = timer(whole([&] { sph::grid_search<3>(p.x, p.h, box, nl, buf); }));  // before nl.pairs() is read
   add("neighbour search", search, static_cast<double>(nl.pairs()));
   // The same gas with the support radius of the central 0.4 % (r < 0.1) four times larger, like a
   // blast wave's hot, rarefied centre: the search's cost should follow the bulk's h, not the largest.
@@ -93,11 +95,11 @@ std::vector<Row> measure(long n_wanted, const BenchOptions& o, double& bytes_per
   if (*std::max_element(wide.begin(), wide.end()) < 0.5) {  // the periodic box's limit
     sph::NeighbourList nw;
     sph::GridSearchBuffers<3> bw;
-    const Times t = timer([&] { sph::grid_search<3>(p.x, wide, box, nw, bw); });
+    const Times t = timer(whole([&] { sph::grid_search<3>(p.x, wide, box, nw, bw); }));
     add("neighbour search, central h x4", t, static_cast<double>(nw.pairs()));
   }
   sph::Components<3> xs;  // kept, as a scene keeps its own (sph/hydro/scene.hpp)
-  add("density (27)", timer([&] { sph::density_summation<3>(p, nl, box, xs); }), static_cast<double>(nl.pairs()));
+  add("density (27)", timer(whole([&] { sph::density_summation<3>(p, nl, box, xs); })), static_cast<double>(nl.pairs()));
   const HydroTimes hydro = time_hydro_step(p, box, timer);
   add("hydro forces", hydro.forces, hydro.pairs);
   add("full hydro step", hydro.step, hydro.pairs);
@@ -111,10 +113,10 @@ std::vector<Row> measure(long n_wanted, const BenchOptions& o, double& bytes_per
   bytes_per_particle = hydro.bytes_per_particle;
   if (n <= o.tree_max) {
     sph::Tree<3> tree;
-    add("tree build", timer([&] { tree = sph::build_tree<3>(p.x, p.m); }), 0.0);
+    add("tree build", timer(whole([&] { tree = sph::build_tree<3>(p.x, p.m); })), 0.0);
     sph::GravityField g;
     const sph::GravityOptions go{.theta = 0.5, .eps = 0.01};
-    const Times t = timer([&] { g = sph::tree_gravity(tree, p.x, p.m, go); });
+    const Times t = timer(whole([&] { g = sph::tree_gravity(tree, p.x, p.m, go); }));
     double inter = 0.0;
     for (long k : g.interactions) inter += static_cast<double>(k);
     add("tree gravity (quadrupole, theta 0.5)", t, inter);
@@ -122,7 +124,7 @@ std::vector<Row> measure(long n_wanted, const BenchOptions& o, double& bytes_per
   if (n <= o.direct_max) {
     std::vector<double> x(n), y(n), z(n);
     for (long i = 0; i < n; ++i) x[i] = p.x[i][0], y[i] = p.x[i][1], z[i] = p.x[i][2];
-    add("direct-sum gravity", timer([&] { reference::direct_sum(x, y, z, p.m, 1.0, 0.01); }),
+    add("direct-sum gravity", timer(whole([&] { reference::direct_sum(x, y, z, p.m, 1.0, 0.01); })),
         double(n) * double(n - 1));
   }
   return rows;

@@ -5,6 +5,7 @@
 // step; and evolve's step from the particles stored in a random order, with and without its
 // reordering of them (sph/hydro/storage_order.hpp).
 #include <algorithm>
+#include <chrono>
 #include <functional>
 #include <numeric>
 #include <random>
@@ -37,10 +38,21 @@ constexpr double force_pair_flops = 99.0;
 // The steps over which the full step is timed (time_hydro_step).
 constexpr long full_step_window = 32;
 
-// A stage's time on each of the thread counts benchmarked, in their order, and what measures it
-// (verification/bench.cpp: the thread counts take turns run by run).
+// A run's time in parts, measured by the run itself (evolve's steps; one part: the run whole). A
+// stage's time on each of the thread counts benchmarked, in their order: each part's least over a
+// few runs, summed (verification/bench.cpp: the thread counts take turns run by run).
+using Parts = std::vector<double>;
 using Times = std::vector<double>;
-using Timer = std::function<Times(const std::function<void()>&)>;
+using Timer = std::function<Times(const std::function<Parts()>&)>;
+
+// f's run as one part.
+inline std::function<Parts()> whole(std::function<void()> f) {
+  return [f = std::move(f)] {
+    const auto t0 = std::chrono::steady_clock::now();
+    f();
+    return Parts{std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()};
+  };
+}
 
 struct HydroTimes {
   Times forces, step, step_fresh_search;
@@ -54,40 +66,53 @@ using StepScene = sph::Scene<3, sph::SummationDensity<3>, sph::EquationOfState<3
 
 // A step as evolve takes it (sph/hydro/evolve.hpp: Courant step, lists reused while they cover, the
 // particles stored in the search's cell order, the verdict's check), from the state p with its
-// density: evolve itself, run for 1 and for 1 + full_step_window steps from the same state; the
-// difference over the window leaves out the start (first evaluation, search and reordering). The
-// window spans several reuses of a list: with 8 steps it held 3 searches at the skin of 0.1 (0.38 a
-// step, against 0.28 over 40 steps) and the step came out 8 % too slow (N = 125,000, one thread).
-// Both runs are timed alike, after an untimed run that pays the process's first touch of the
-// buffers (a cold first run took 1.03 s against 0.52 s warm at N = 125,000 on one thread, and made
-// the difference too small). Returns the step's time and the searches a step.
+// density: evolve itself, run for 1 + full_step_window steps, each step after the first timed by
+// its `stepped` hook (which only reads the clock, so evolve still reorders). The first step, with
+// the start (first evaluation, search and reordering), is left out. The window spans several reuses
+// of a list: with 8 steps it held 3 searches at the skin of 0.1 (0.38 a step, against 0.28 over 40
+// steps) and the step came out 8 % too slow (N = 125,000, one thread). Each step's least over the
+// runs: the runs repeat the same steps bit for bit, and the host's slow spells (seconds long, one
+// core or both, up to 1.5x) only add time, so a step slowed in one run counts at its time in
+// another. The least of whole runs (12-22 s each at N = 1e6) kept a spell that fell somewhere in
+// every one: two threads' speed-up of the step at N = 1e6 came out 1.63-1.84x over six benches,
+// 1.81-1.90x over three with each step's least (1.80-1.97x in a driver's quiet minutes).
+// The runs are timed after an untimed one that pays the process's first touch of the buffers (a
+// cold first run took 1.03 s against 0.52 s warm at N = 125,000 on one thread). Returns the step's
+// time and the searches a step.
 inline std::pair<Times, double> time_evolve_step(const sph::Particles<3>& p, const sph::Box<3>& box, const Timer& timer,
                                                  long reorder_every = sph::HydroControls{}.reorder_every) {
   using namespace sph;
+  using Clock = std::chrono::steady_clock;
   StepScene step;
   HydroControls run;
   run.t_end = 1e30;  // ended by the step budget
   run.reorder_every = reorder_every;
-  auto evolve_for = [&](long steps) {  // returns the searches made
+  auto evolve_for = [&](long steps, const HydroHooks<3>& hooks) {  // returns the searches made
     run.max_steps = steps;
     Particles<3> q = p;
-    const HydroOutcome out = evolve(step, q, box, run);
+    const HydroOutcome out = evolve(step, q, box, run, hooks);
     // The budget ends the run with its verdict; a state gone bad on the last step also has
     // steps == budget, so the particles are checked as well.
     if (out.steps != steps || first_bad(q)) throw std::runtime_error("bench: the uniform gas went bad: " + out.verdict);
     return out.searches;
   };
-  // Each run timed by timer (its least of a few repetitions; the copy of the state, inside both,
-  // cancels), the step is the difference over the window. The least of three differences instead was
-  // biased low: a slow run of 1 step shrinks its difference (2.8x of one thread's step on two
-  // threads, measured).
-  evolve_for(1);
-  long one = 0, more = 0;  // searches: the same in every repetition
-  const Times t_one = timer([&] { one = evolve_for(1); });
-  const Times t_more = timer([&] { more = evolve_for(1 + full_step_window); });
-  Times per_step(t_one.size());
-  for (std::size_t k = 0; k < per_step.size(); ++k) per_step[k] = (t_more[k] - t_one[k]) / full_step_window;
-  return {per_step, static_cast<double>(more - one) / full_step_window};
+  const long at_start = evolve_for(1, {});  // untimed; the searches of the first step
+  long searches = 0;  // the same in every run
+  const Times t = timer([&] {
+    std::vector<Clock::time_point> stepped;
+    stepped.reserve(1 + full_step_window);
+    HydroHooks<3> clock;
+    clock.stepped = [&](const Particles<3>&, const Derivatives<3>&, long, double) { stepped.push_back(Clock::now()); };
+    clock.index_free = true;
+    searches = evolve_for(1 + full_step_window, clock);
+    Parts steps(full_step_window);
+    for (long k = 0; k < full_step_window; ++k)
+      steps[k] = std::chrono::duration<double>(stepped[k + 1] - stepped[k]).count();
+    return steps;
+  });
+  Times per_step(t.size());
+  for (std::size_t k = 0; k < per_step.size(); ++k) per_step[k] = t[k] / full_step_window;
+  return {per_step, static_cast<double>(searches - at_start) / full_step_window};
 }
 
 // The particles of p stored in a random order, as a snapshot of another code may hold them.
@@ -120,7 +145,7 @@ inline HydroTimes time_hydro_step(sph::Particles<3>& p, const sph::Box<3>& box, 
   Forces forces;
   HydroTimes t{};
   t.pairs = static_cast<double>(nl.pairs());
-  t.forces = timer([&] { forces.derivatives(p, Neighbourhood<3>{nl, box}, d); });
+  t.forces = timer(whole([&] { forces.derivatives(p, Neighbourhood<3>{nl, box}, d); }));
   StepScene step;
   GridSearchBuffers<3> buffers;  // kept, as evolve's lists keep theirs: fresh ones fault pages in every step
   auto derivs = [&](Particles<3>& q, Derivatives<3>& dd) {
@@ -128,7 +153,7 @@ inline HydroTimes time_hydro_step(sph::Particles<3>& p, const sph::Box<3>& box, 
     step.derivatives(q, Neighbourhood<3>{nl, box}, dd);
   };
   derivs(p, d);
-  t.step_fresh_search = timer([&] { kdk_leapfrog_step(p, d, at_t, 1e-4, derivs); });
+  t.step_fresh_search = timer(whole([&] { kdk_leapfrog_step(p, d, at_t, 1e-4, derivs); }));
   std::tie(t.step, t.searches_per_step) = time_evolve_step(p, box, timer);
   // Particle state (x, v: 6 doubles; m, rho, p, c, u, h: 6), derivatives (dv/dt: 3; du/dt,
   // drho/dt, dh/dt, mu_max: 4) and the KDK step's scratch of them, neighbour list (one int per pair,
