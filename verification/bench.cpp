@@ -54,6 +54,12 @@ Times best_times(const std::vector<int>& threads, const std::function<Parts()>& 
   for (int k = 0; k < 5 && (k < 3 || total < 1.0); ++k)
     for (std::size_t i = 0; i < threads.size(); ++i) {
       omp_set_num_threads(threads[i]);
+      // The team started before f runs: a thread left idle through another count's run took 9-13 ms
+      // to start in f's first parallel region (N = 1e6, the wide search on two threads after one
+      // thread's 0.5 s; 0.1 ms once started, measured), which f's clock would count.
+#pragma omp parallel
+      {
+      }
       const Parts t = f();
       if (k == 0) best[i] = t;
       for (std::size_t j = 0; j < t.size(); ++j) best[i][j] = std::min(best[i][j], t[j]), total += t[j];
