@@ -3,6 +3,7 @@
 // the new entries unset instead of writing zeros. For arrays every entry of which is written
 // right after the resize (neighbour lists, position columns): at N = 125,000 the zeros of the
 // lists were a 31 MB memset, on one thread, per search and per pair selection.
+#include <algorithm>
 #include <cstddef>
 #include <memory>
 #include <new>
@@ -43,6 +44,17 @@ void resize_for_overwrite(V& v, std::size_t n) {
     v.reserve(n + n / 8);
   }
   v.resize(n);
+}
+
+// v grown to n entries, its first `kept` ones copied and the rest unset. A vector's own growth
+// copies all of its entries, the unwritten ones too, and so writes (faults in) the new block up to
+// its old size.
+template <class V>
+void grow_keeping(V& v, std::size_t kept, std::size_t n) {
+  V w;
+  resize_for_overwrite(w, n);
+  std::copy_n(v.begin(), kept, w.begin());
+  v.swap(w);
 }
 
 }  // namespace sph

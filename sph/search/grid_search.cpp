@@ -215,6 +215,7 @@ template <int D>
 [[gnu::flatten]] void grid_search(const std::vector<Vec<D>>& x, const std::vector<double>& h, const Box<D>& box,
                                   NeighbourList& nl, GridSearchBuffers<D>& buf) {
   const std::size_t n = x.size();
+  const std::size_t last_pairs = nl.j.size();  // the last search's, when nl is kept from it
   nl.offset.assign(n + 1, 0);
   nl.j.clear();
   nl.order.clear();
@@ -416,15 +417,24 @@ template <int D>
       stretches.reset(n, nt);
       chunk_missed.resize(stretches.chunks());
     }
-    // A thread short of room grows its buffer to hold every particle's pairs at the rate it has
-    // listed so far, with an eighth to spare: whatever share of them it lists at a later search
-    // (it takes chunks from the others), the buffer then need not be reallocated, which faults its
-    // pages in again. Grown by doubling, then sized to the last search's pairs, it made the second
-    // search of a run take 0.78 s against 0.21 s for the later ones (N = 1e6, two threads, 90,000
-    // page faults against 1,500-4,600; measured).
+    // Room from the start for all the last search's pairs and an eighth more, whatever share of
+    // them this thread lists (it takes chunks from the others); short of room (a first search, a
+    // longer list), grown to hold every particle's pairs at the rate listed so far, with an eighth
+    // to spare, keeping only the pairs listed (grow_keeping). A buffer reallocated at a later search
+    // faults its pages in again: grown by doubling, then sized to the last search's pairs, it made
+    // the second search of a run take 0.78 s against 0.21 s for the later ones (N = 1e6, two
+    // threads, 90,000 page faults against 1,500-4,600); grown at the rate so far alone, a thread
+    // that listed few pairs at first grew it again in later searches. The pairs for the other end
+    // (wide h) are listed pairs too: their buffer has room for as many as the list; grown by
+    // doubling, it was reallocated and zeroed whenever the thread took more wide particles than
+    // before. Searches with the central 0.4 % of h four times larger, N = 1e6, on one thread then
+    // two in turn: 3,600-45,000 page faults in each two-thread search (0.32-0.76 s) with those two
+    // rules; with these 25,600 in the first, then fewer at each (7,000 down to 700 at the sixth:
+    // pages first written as the thread takes other chunks; measured).
     auto& js = parts[t];
-    std::vector<std::array<int, 2>>& mt = missed[t];
-    if (js.size() < n / nt * 64) resize_for_overwrite(js, n / nt * 64);
+    auto& mt = missed[t];
+    const std::size_t room = std::max(last_pairs + last_pairs / 8, n / nt * 64);
+    if (js.size() < room) resize_for_overwrite(js, room);
     std::size_t used = 0, nm = 0, scanned = 0;  // pairs and particles this thread has listed
     std::vector<Run<D>> sten;
     std::size_t sten_size = 0;  // the stencil's candidates
@@ -444,10 +454,11 @@ template <int D>
         owner[i] = t;
         local[i] = used;
         if (used + sten_size + lanes > js.size())
-          js.resize(std::max(2 * js.size(), used / std::max<std::size_t>(scanned, 1) * (n + n / 8)) + sten_size + lanes);
+          grow_keeping(js, used,
+                       std::max(2 * js.size(), used / std::max<std::size_t>(scanned, 1) * (n + n / 8)) + sten_size + lanes);
         ++scanned;
         if constexpr (wide) {
-          if (nm + sten_size > mt.size()) mt.resize(2 * mt.size() + sten_size);
+          if (mt.size() < js.size()) grow_keeping(mt, nm, js.size());  // nm <= used: room for sten_size more
           const Found f = own_reach_on(path, s, static_cast<int>(i), sten, view, js.data() + used, mt.data() + nm);
           used += f.listed;
           nm += f.missed;

@@ -40,7 +40,7 @@ struct GridSearchBuffers {
   std::vector<double> hs;
   std::vector<std::size_t> local, extra;
   std::vector<std::vector<int, DefaultInitAllocator<int>>> parts;  // each thread's lists
-  std::vector<std::vector<std::array<int, 2>>> missed;      // each thread's pairs for the other end
+  std::vector<std::vector<std::array<int, 2>, DefaultInitAllocator<std::array<int, 2>>>> missed;  // each thread's pairs for the other end
 };
 
 // The search into nl, with buffers kept from the last search (the list's own arrays as well).
