@@ -74,8 +74,10 @@ using StepScene = sph::Scene<3, sph::SummationDensity<3>, sph::EquationOfState<3
 // runs: the runs repeat the same steps bit for bit, and the host's slow spells (seconds long, one
 // core or both, up to 1.5x) only add time, so a step slowed in one run counts at its time in
 // another. The least of whole runs (12-22 s each at N = 1e6) kept a spell that fell somewhere in
-// every one: two threads' speed-up of the step at N = 1e6 came out 1.63-1.84x over six benches,
-// 1.81-1.90x over three with each step's least (1.80-1.97x in a driver's quiet minutes).
+// every one: two threads' speed-up of the step at N = 1e6 came out 1.63-1.84x over six benches;
+// with each step's least 1.81x, 1.90x and 1.81x, and 1.73x and 1.71x in two benches while the host
+// was slow throughout (two cores' FMA peak 1.83x one's; a canary 10-40 % slow after); 1.80-1.97x in
+// a driver's quiet minutes.
 // The runs are timed after an untimed one that pays the process's first touch of the buffers (a
 // cold first run took 1.03 s against 0.52 s warm at N = 125,000 on one thread). Returns the step's
 // time and the searches a step.
