@@ -46,11 +46,13 @@ void resize_for_overwrite(V& v, std::size_t n) {
   v.resize(n);
 }
 
-// v grown to n entries, its first `kept` ones copied and the rest unset. A vector's own growth
+// v (with DefaultInitAllocator) grown to n entries, its first `kept` ones kept and the rest unset:
+// in place when its block holds n, else only those copied to a new one. A vector's own growth
 // copies all of its entries, the unwritten ones too, and so writes (faults in) the new block up to
 // its old size.
 template <class V>
 void grow_keeping(V& v, std::size_t kept, std::size_t n) {
+  if (n <= v.capacity()) return v.resize(n);
   V w;
   resize_for_overwrite(w, n);
   std::copy_n(v.begin(), kept, w.begin());

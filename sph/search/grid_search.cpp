@@ -309,7 +309,7 @@ template <int D>
   // Counting sort by cell, stable (by index within a cell, as a serial sort): each thread counts
   // the cells of a contiguous range of indices, a cell's slots go to the threads in order, and each
   // thread places its range. Positions then copied in that order (wrapped into a periodic box).
-  auto& [coord, cell_of, start, fill, sorted, owner, xs, hs, local, extra, parts, missed] = buf;
+  auto& [coord, cell_of, start, fill, sorted, owner, xs, hs, local, parts, missed] = buf;
   coord.resize(n);
   cell_of.resize(n);
   start.resize(ncell + 1);  // every entry is written below
@@ -415,7 +415,7 @@ template <int D>
   // of h_max/2): every particle searches h_max and keeps |r_ij| < max(h_i, h_j) (candidates). Wide
   // h: i searches its own h_i, keeps |r_ij| < h_i and notes the pairs the other end misses as
   // (j, i) in visiting order (h_j <= |r_ij| < h_i), recording where each chunk's are.
-  const bool wide = width < 0.5 * hmax;
+  const bool wide_h = width < 0.5 * hmax;
   owner.resize(n);
   local.resize(n);
   Stretches stretches;
@@ -432,25 +432,28 @@ template <int D>
       stretches.reset(n, nt);
       chunk_missed.resize(stretches.chunks());
     }
-    // Room from the start for all the last search's pairs and an eighth more, whatever share of
-    // them this thread lists (it takes chunks from the others); short of room (a first search, a
-    // longer list), grown to hold every particle's pairs at the rate listed so far, with an eighth
-    // to spare, keeping only the pairs listed (grow_keeping). A buffer reallocated at a later search
-    // faults its pages in again: grown by doubling, then sized to the last search's pairs, it made
-    // the second search of a run take 0.78 s against 0.21 s for the later ones (N = 1e6, two
-    // threads, 90,000 page faults against 1,500-4,600); grown at the rate so far alone, a thread
-    // that listed few pairs at first grew it again in later searches. The pairs for the other end
-    // (wide h) are listed pairs too: their buffer has room for as many as the list; grown by
-    // doubling, it was reallocated and zeroed whenever the thread took more wide particles than
-    // before. Searches with the central 0.4 % of h four times larger, N = 1e6, on one thread then
-    // two in turn: 3,600-45,000 page faults in each two-thread search (0.32-0.76 s) with those two
-    // rules; with these 25,600 in the first, then fewer at each (7,000 down to 700 at the sixth:
-    // pages first written as the thread takes other chunks; measured).
+    // Two rules keep a later search from reallocating a buffer, which faults its pages in again.
+    // (1) Room from the start for all the last search's pairs and an eighth more, whatever share
+    // of them this thread lists (it takes chunks from the others). (2) Short of room (a first
+    // search, a longer list), grown to every particle's pairs at the rate this thread has listed so
+    // far, with an eighth to spare, keeping only the pairs listed (grow_keeping): (1) alone, after a
+    // first search whose buffer grew by doubling, reallocated it at the second (N = 1e6, two
+    // threads: 0.78 s against 0.21 s for the later ones, 90,000 page faults against 1,500-4,600);
+    // (2) alone left a thread that listed few pairs at first, or ran after a search on fewer
+    // threads, to grow it again later. The pairs for the other end (wide h) are listed pairs too:
+    // their buffer has as much room, unset; grown by doubling and zeroed, it was reallocated
+    // whenever the thread took more wide particles than before. With the central 0.4 % of h four
+    // times larger, one thread's search then two threads' in turn: 3,600-45,000 page faults in each
+    // two-thread search (0.32-0.76 s) before, 25,600 in the first, then fewer at each (7,000 down
+    // to 700 at the sixth: pages first written as the thread takes other chunks; measured).
     auto& js = parts[t];
     auto& mt = missed[t];
-    const std::size_t room = std::max(last_pairs + last_pairs / 8, n / nt * 64);
-    if (js.size() < room) resize_for_overwrite(js, room);
-    std::size_t used = 0, nm = 0, scanned = 0;  // pairs and particles this thread has listed
+    std::size_t used = 0, nm = 0, scanned = 0;  // the pairs this thread listed, those for the other end, its particles
+    auto room_for = [&](std::size_t pairs) {
+      if (js.size() < pairs) grow_keeping(js, used, pairs);
+      if (wide_h && mt.size() < js.size()) grow_keeping(mt, nm, js.size());  // nm <= used
+    };
+    room_for(std::max(last_pairs + last_pairs / 8, n / nt * 64));
     std::vector<Run<D>> sten;
     std::size_t sten_size = 0;  // the stencil's candidates
     std::int64_t sten_of = -1;
@@ -469,11 +472,9 @@ template <int D>
         owner[i] = t;
         local[i] = used;
         if (used + sten_size + lanes > js.size())
-          grow_keeping(js, used,
-                       std::max(2 * js.size(), used / std::max<std::size_t>(scanned, 1) * (n + n / 8)) + sten_size + lanes);
+          room_for(std::max(2 * js.size(), used / std::max<std::size_t>(scanned, 1) * (n + n / 8)) + sten_size + lanes);
         ++scanned;
         if constexpr (wide) {
-          if (mt.size() < js.size()) grow_keeping(mt, nm, js.size());  // nm <= used: room for sten_size more
           const Found f = own_reach_on(path, s, static_cast<int>(i), sten, view, js.data() + used, mt.data() + nm);
           used += f.listed;
           nm += f.missed;
@@ -484,19 +485,18 @@ template <int D>
       }
       if constexpr (wide) chunk_missed[c] = {static_cast<std::size_t>(t), nm0, nm - nm0};
     };
-    if (wide)
+    if (wide_h)
       stretches.work(t, [&](std::size_t c, std::size_t a, std::size_t b) { scan(std::true_type{}, c, a, b); });
     else
       stretches.work(t, [&](std::size_t c, std::size_t a, std::size_t b) { scan(std::false_type{}, c, a, b); });
   }
   // The lists joined: particle i's row holds the pairs it listed, then (wide h) those the other
   // end missed, in the visiting order of the particles that found them (the chunks in order). Each
-  // thread takes the rows of an equal range of indices: it counts and places the missed pairs of
-  // its rows (reading every chunk's, keeping its own), sums its rows, and after the sums of the
-  // ranges before it copies them. The same list on any thread count (integer sums).
-  extra.resize(n);   // missed pairs per row
-  fill.resize(n);    // where a row's next missed pair goes
-  std::vector<std::size_t> range_pairs;  // the pairs of each thread's rows
+  // thread takes the rows of an equal range of indices: it counts the missed pairs of its rows
+  // (reading every chunk's, keeping its own), sums its rows, and after the sums of the ranges
+  // before it copies them and places their missed pairs. The same list on any thread count.
+  fill.resize(n);  // a row's missed pairs, then where its next one goes
+  std::vector<std::size_t> range_pairs;  // the pairs of each thread's rows, then where they start
 #pragma omp parallel if (n >= parallel_threshold)
   {
     const int nt = omp_get_num_threads(), t = omp_get_thread_num();
@@ -508,10 +508,10 @@ template <int D>
           if (static_cast<std::size_t>(jm[0]) - a < b - a) f(jm);
         }
     };
-    std::fill(extra.begin() + a, extra.begin() + b, 0);
-    if (wide) each_mine([&](const std::array<int, 2>& jm) { ++extra[jm[0]]; });
+    std::fill(fill.begin() + a, fill.begin() + b, 0);
+    if (wide_h) each_mine([&](const std::array<int, 2>& jm) { ++fill[jm[0]]; });
     std::size_t sum = 0;
-    for (std::size_t i = a; i < b; ++i) sum += nl.offset[i + 1] + extra[i];
+    for (std::size_t i = a; i < b; ++i) sum += nl.offset[i + 1] + fill[i];
 #pragma omp single
     range_pairs.assign(nt, 0);
     range_pairs[t] = sum;
@@ -519,18 +519,18 @@ template <int D>
 #pragma omp single
     {
       std::size_t total = 0;
-      for (std::size_t& r : range_pairs) total += std::exchange(r, total);  // each range's first
+      for (std::size_t& r : range_pairs) total += std::exchange(r, total);
       resize_for_overwrite(nl.j, total);
     }
     std::size_t at = range_pairs[t];
     for (std::size_t i = a; i < b; ++i) {  // nl.offset[i + 1]: the pairs i listed, then where its row ends
-      const std::size_t own = nl.offset[i + 1];
+      const std::size_t own = nl.offset[i + 1], missed_here = fill[i];
       std::copy_n(parts[owner[i]].begin() + local[i], own, nl.j.begin() + at);
       fill[i] = static_cast<std::int64_t>(at + own);
-      at += own + extra[i];
+      at += own + missed_here;
       nl.offset[i + 1] = at;
     }
-    if (wide) each_mine([&](const std::array<int, 2>& jm) { nl.j[fill[jm[0]]++] = jm[1]; });
+    if (wide_h) each_mine([&](const std::array<int, 2>& jm) { nl.j[fill[jm[0]]++] = jm[1]; });
   }
   sorted.resize(n);       // the padding dropped
   nl.order.swap(sorted);  // the last order's array becomes the next search's buffer

@@ -34,11 +34,11 @@ template <int D>
 struct GridSearchBuffers {
   std::vector<std::array<int, D>> coord;
   std::vector<std::int64_t> cell_of, start;
-  std::vector<std::int64_t> fill;  // cursors: per thread and cell (the sort), then per particle (missed pairs)
+  std::vector<std::int64_t> fill;  // cursors: per thread and cell (the sort), then per row (missed pairs)
   std::vector<int> sorted, owner;
   std::array<std::vector<double>, D> xs;  // positions in cell order, one array per dimension
   std::vector<double> hs;
-  std::vector<std::size_t> local, extra;
+  std::vector<std::size_t> local;
   std::vector<std::vector<int, DefaultInitAllocator<int>>> parts;  // each thread's lists
   std::vector<std::vector<std::array<int, 2>, DefaultInitAllocator<std::array<int, 2>>>> missed;  // each thread's pairs for the other end
 };
