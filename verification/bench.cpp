@@ -196,9 +196,13 @@ void bench(const BenchOptions& o) {
     // each N's runs on every thread count).
     resident[rows.back().n] = peak_resident_bytes() / rows.back().n;
     std::printf("measured peak before / after these runs:");
-    for (const auto& [t, pk] : at)
-      std::printf(" %d thread(s) %.3e / %.3e flop/s (%.2fx / %.2fx one thread's);", t, pk[0], pk[1],
-                  pk[0] / at.begin()->second[0], pk[1] / at.begin()->second[1]);
+    const auto one = at.find(1);
+    for (const auto& [t, pk] : at) {
+      std::printf(" %d thread(s) %.3e / %.3e flop/s", t, pk[0], pk[1]);
+      if (t != 1 && one != at.end())
+        std::printf(" (%.2fx / %.2fx one thread's)", pk[0] / one->second[0], pk[1] / one->second[1]);
+      std::printf(";");
+    }
     std::printf("\n");
   }
 
