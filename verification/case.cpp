@@ -22,6 +22,10 @@ Tier parse_tier(const std::string& s) {
 
 const char* to_string(Tier t) { return t == Tier::quick ? "quick" : t == Tier::standard ? "standard" : "full"; }
 
+const char* to_string(Check::Kind k) {
+  return k == Check::Kind::drift ? "drift" : k == Check::Kind::known_failure ? "known_failure" : "verification";
+}
+
 double tier_timeout(Tier t) { return t == Tier::quick ? 120.0 : t == Tier::standard ? 600.0 : 0.0; }
 
 const std::vector<long>& Levels::at(Tier t) const {

@@ -21,7 +21,7 @@ std::string escaped(const std::string& s) {
 std::string check_message(const Check& c) {
   char buf[160];
   std::snprintf(buf, sizeof buf, "%s = %.9g, bound [%.9g, %.9g] (%s): %s", c.name.c_str(), c.value, c.lo, c.hi,
-                c.kind == Check::Kind::drift ? "drift" : "verification", c.pass() ? "pass" : "FAIL");
+                to_string(c.kind), c.pass() ? "pass" : "FAIL");
   return std::string(buf) + "; " + c.why;
 }
 

@@ -21,8 +21,9 @@ inline const std::map<std::string, std::string> error_defs = {
                  "rho_post = 4^d rho0 (exact Noh); unweighted particle mean"},
     {"shock_speed", "|R_front / t - 1/3| / (1/3); R_front: where the mean density in 40 radial bins on [0, 2 R_s) falls, "
                     "going outwards from R_s/4, through (rho_post + rho_pre(R_s)) / 2"},
-    {"swept_mass", "|M_swept - rho0 vol_d(R_s + t)| / (rho0 vol_d(R_s + t)), M_swept = sum of m_i with radial velocity "
-                   "v_i . r_i / |r_i| > -1/2 (gas brought to rest)"}};
+    {"swept_mass", "|M_swept - rho0 vol_d(R_s + t)| / (rho0 vol_d(R_s + t)), M_swept = sum_i m_i min(1, max(0, 1 + "
+                   "v_i . r_i / |r_i|)): the mass brought to rest, each particle weighted by the share of its unit "
+                   "inflow speed it has lost"}};
 
 // Fills r.errors, r.functionals, figures and extras from the particles at time t (positions
 // relative to the centre); n: particles per unit length (figure titles only).
@@ -41,11 +42,14 @@ void measure(Result& r, const std::vector<sph::Vec<D>>& x, const std::vector<sph
     if (rad[i] < 0.1 * Rs) rho_c += rho[i], u_c += u[i], ++cnt_c;
   }
   const double rho_mid = cnt > 0 ? sum / cnt : 0.0;
-  // Swept mass: the gas brought to rest (radial velocity above -1/2, half-way from the inflow to
-  // rest) against rho0 vol(R_s + t), all the gas that started inside R_s + u0 t.
+  // Swept mass: the gas brought to rest against rho0 vol(R_s + t), all the gas that started inside
+  // R_s + u0 t. A particle inside the smeared shock counts by the share of the inflow speed it has
+  // lost, so the measure moves continuously with the shock instead of a particle at a time.
   double swept = 0.0;
-  for (std::size_t i = 0; i < x.size(); ++i)
-    if (v[i].dot(x[i]) > -0.5 * rad[i]) swept += m[i];
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const double vr = rad[i] > 0.0 ? v[i].dot(x[i]) / rad[i] : 0.0;
+    swept += m[i] * std::clamp(1.0 + vr, 0.0, 1.0);
+  }
   const double swept_exact = ball_volume(D, Rs + t);
   // Shock position: the radius where the binned density falls, going outwards, through the
   // midpoint of the exact post-shock and pre-shock (4^(d-1) rho0 for gamma = 5/3) values.
