@@ -17,8 +17,7 @@ namespace sph {
 // results are reproducible for a given path (and thread count independent on each), and a run's
 // provenance records the path. The walk is compiled without contraction (CMakeLists.txt), so its
 // field is the same on every path bit for bit (verification/tests/gravity.cpp). The pair loops
-// sum in list order on every path; their copies agree to round-off (verification/tests/hydro.cpp;
-// 3D results of the quick tier moved by up to 4e-15 relative from avx2 to avx512).
+// sum in list order on every path; their copies agree to round-off (verification/tests/hydro.cpp).
 enum class IsaPath { portable, avx2, avx512 };
 
 // Defined where the compiler can build the second and third copies (x86-64, GCC's target
@@ -34,9 +33,8 @@ inline const char* isa_name(IsaPath p) {
 
 // The copy of a D-dimensional scene's pair loops that path p runs: in 1D the portable one (1D runs
 // are small; another copy would cost compile time, not run time), in 2D at most AVX2, in 3D p's
-// own (AVX-512: the bench's force loop 7.0-7.4 -> 6.1-6.5 ns a pair, the density 2.5-2.6 -> 2.4,
-// N = 125,000, one thread, measured); never wider than the widest copy a scene has compiled
-// (hydro/scene.hpp: WidestLoopCopy).
+// own (AVX-512's eight lanes speed up the 3D force and density loops); never wider than the
+// widest copy a scene has compiled (hydro/scene.hpp: WidestLoopCopy).
 template <int D>
 IsaPath loop_path(IsaPath p, IsaPath widest = IsaPath::avx512) {
   if (D == 1) return IsaPath::portable;

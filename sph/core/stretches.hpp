@@ -59,8 +59,8 @@ class Stretches {
   }
 
  private:
-  // A chunk: 512 particles, about 0.15 ms of the force loop at 60 neighbours, so the threads end
-  // within that of each other, and a thread claims a chunk ~7,000 times a second.
+  // A chunk: 512 particles, a fraction of a millisecond of the force loop, so the threads end
+  // within that of each other, and claiming a chunk costs little against the chunk's work.
   static constexpr std::size_t chunk = 512;
   struct alignas(64) Stretch {
     std::atomic<std::uint64_t> bounds;  // front << 32 | back: its chunks left are front .. back - 1

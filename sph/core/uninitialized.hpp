@@ -1,8 +1,8 @@
 #pragma once
 // An allocator that default-initialises: resize() of a vector of ints or doubles with it leaves
 // the new entries unset instead of writing zeros. For arrays every entry of which is written
-// right after the resize (neighbour lists, position columns): at N = 125,000 the zeros of the
-// lists were a 31 MB memset, on one thread, per search and per pair selection.
+// right after the resize (neighbour lists, position columns): zeros written first would be a
+// memset of the whole list, on one thread, at every search and every pair selection.
 #include <algorithm>
 #include <cstddef>
 #include <memory>
@@ -34,9 +34,7 @@ struct DefaultInitAllocator : std::allocator<T> {
 // v resized to n entries that the caller then writes, every one. When v must grow, it moves to a
 // block an eighth larger than n, without copying its entries: a neighbour list a few pairs longer
 // than at the last search then stays where it is, instead of moving to fresh pages that the kernel
-// faults in and zeroes. Measured at N = 1e6 (`sphv bench`, interleaved with the code before, two
-// rounds): a 33-step run's page faults 0.42 M -> 0.01 M on one thread, evolve's step 1.08 -> 0.86 s
-// and 1.31 -> 1.24 s on one thread, 0.67 -> 0.58 s and 0.85 -> 0.70 s on two.
+// faults in and zeroes.
 template <class V>
 void resize_for_overwrite(V& v, std::size_t n) {
   if (n > v.capacity()) {

@@ -18,7 +18,7 @@ template <Multipole M, Opening O>
   detail::group_field<M, O>(w, in, g);
 }
 
-// Half the time of the AVX2 copy at N = 125,000: the sum's lanes are 8 targets, not 4.
+// The sum's lanes are 8 targets, not the AVX2 copy's 4: a group takes half the vector operations.
 template <Multipole M, Opening O>
 [[gnu::flatten, gnu::target(SPH_AVX512_TARGET)]] void group_avx512(
     const detail::Walk& w, detail::Lanes in, detail::Group& g) {

@@ -76,9 +76,8 @@ static_assert(group_size == 32 && sizeof(Lanes) == 4, "a group's targets are the
 // -G Q_ab y_a y_b / (2 r^5), Q = 3 S - tr(S) I (84). a = -grad phi, so the quadrupole enters the
 // force. A source's fields are read once for all the lanes, which compute its terms and keep
 // them where they take it (a select: a lane that does not take the source, such as the target
-// itself, may see an infinite term). Only 41 % of the lanes take a source on average
-// (N = 125,000, theta 0.5), yet with 8 lanes a vector (the avx512 path) the whole walk took 0.44 s
-// against 0.74 s with per-target lists, whose sources were gathered (avx2: 0.74 s either way).
+// itself, may see an infinite term). Fewer than half of the lanes take a given source, yet this
+// is faster than per-target lists, whose sources would have to be gathered.
 template <Multipole M>
 inline void sum_sources(const std::vector<Source>& s, const int* list, const Lanes* take, int n,
                         const double* r0, const double* r1, const double* r2, double G, double eps2, double* ax,
@@ -114,8 +113,8 @@ inline void sum_sources(const std::vector<Source>& s, const int* list, const Lan
 // What the walk reads of a node to decide, in one cache line (Cell): the centre of mass, the
 // squared distance from it beyond which the node is accepted (plain (d / theta)^2, robust
 // (d / theta + delta)^2), the cell's centre and half its edge; and where its children or
-// particles are (Link). Reading the 200-byte tree nodes instead made the walk slower in five
-// back-to-back pairs of runs, by 1 to 17 %, 9 % in the median (N = 125,000, theta 0.5).
+// particles are (Link). The 200-byte tree nodes would spread each decision over several cache
+// lines.
 struct Cell {
   double cx, cy, cz, rc2, mx, my, mz, half;
 };

@@ -28,23 +28,19 @@ struct HydroControls {
   double t_end = 0.2;
   long max_steps = 1000000;
   // Neighbour lists padded by this fraction of h, reused while they cover (search/verlet_list.hpp).
-  // 0.2: `sphv bench`'s full step over 40 steps at N = 125,000, one thread, took 0.1244 s with 0.1
-  // (0.28 searches a step), 0.1198 s with 0.15, 0.1163 s with 0.2 (0.12), 0.1129 s with 0.3 (0.07)
-  // and 0.1158 s with 0.4: 0.3 pads 2.2x the pairs of an unpadded list for little more.
+  // A wider skin searches less often but lists and filters more pairs at every step; the step is
+  // about as fast at 0.2 as at 0.3, and 0.2 keeps the lists shorter.
   double skin = 0.2;
   // The particles stored in the search's cell order (hydro/storage_order.hpp) at the first search,
   // then at the first search this many steps after the last reordering (0: never). As particles
-  // move, neighbours' storage drifts apart and the pair loops' gathers slow down. `sphv bench`'s
-  // gas with random motions searches every 9 steps, so 8 reorders at every search; its step over 80
-  // steps, reordered at every search against every 64 steps (measured in a driver of evolve's loop):
-  // N = 29,791 0.0192 s against 0.0205 on one thread, N = 97,336 0.0666 against 0.0712, N = 1e6
-  // 0.759 against 0.825; on two threads 3 %, 7 % and 7 % faster. A reordering costs about a seventh
-  // of a step (0.10 s at N = 1e6 on one thread, mostly renumbering the lists' 1e8 entries), so 8
-  // keeps it under 2 % of a run that searches at every step. Only in a run without hooks, or with
-  // hooks that are index_free (others may address particles by index), of a scene that keeps no
-  // arrays over the particles. The particles are returned in the caller's order; the renumbered
-  // lists hold the same pairs in the same order, so the results are the same until the next
-  // search, whose lists may order a particle's neighbours otherwise (a change at round-off).
+  // move, neighbours' storage drifts apart and the pair loops' gathers slow down. A reordering
+  // costs a fraction of a step (mostly renumbering the lists): 8 reorders at every search of a gas
+  // that searches every ten steps or so, and costs little in a run that searches at every step.
+  // Only in a run without hooks, or with hooks that are index_free (others may address particles
+  // by index), of a scene that keeps no arrays over the particles. The particles are returned in
+  // the caller's order; the renumbered lists hold the same pairs in the same order, so the results
+  // are the same until the next search, whose lists may order a particle's neighbours otherwise
+  // (a change at round-off).
   long reorder_every = 8;
 };
 

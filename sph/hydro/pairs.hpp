@@ -47,9 +47,8 @@ Components<D> components(const std::vector<Vec<D>>& x) {
 // of the vectorised density loop (weight_sum_of).
 // The loop over dimensions is unrolled by the pragma, here and in every loop over dimensions
 // inside a vectorised pair loop: -O3 unrolls it anyway, but at -O2 (how the scenes are built,
-// CMakeLists.txt) a loop left inside keeps the pair loop scalar (bench, N = 97,336, one thread:
-// density 0.048 s, forces 0.126 s at -O2 without the pragmas; 0.015 s and 0.037 s with them, as
-// at -O3, whose code is unchanged by them).
+// CMakeLists.txt) a loop left inside keeps the pair loop scalar. -O3's code is unchanged by the
+// pragmas.
 template <int D>
 inline double distance2(std::size_t i, int j, const Components<D>& xs, const Vec<D>& L, const Vec<D>& wrap) {
   double r2 = 0.0;
@@ -116,9 +115,8 @@ inline void pairs_of(std::size_t i, IsaPath path, const Components<D>& xs, const
 
 // The sum over i's listed pairs of g(j, |r_ij|, h_ij) for a g that vanishes for |r_ij| >= h_ij (a
 // kernel weight: W(r, h) = 0 beyond h, (6)): like pairs_of, every listed pair is evaluated without
-// a branch, in vectorised batches, each summed in list order. The density (27): 7.0 -> 2.5-2.8 ns
-// a pair on the AVX2 path (measured, N = 125,000). The portable path has no vector gathers and
-// stays scalar.
+// a branch, in vectorised batches, each summed in list order (the density (27)). The portable
+// path has no vector gathers and stays scalar.
 template <int D, class G>
 inline double weight_sum_of(std::size_t i, const Components<D>& xs, const std::vector<double>& h,
                             const NeighbourList& nl, const Vec<D>& L, const Vec<D>& wrap, G& g) {
@@ -141,10 +139,10 @@ inline double weight_sum_of(std::size_t i, const Components<D>& xs, const std::v
 }
 
 // visit(i) for the particles the loop visits k0 .. k1-1, in three copies (core/isa.hpp): portable,
-// with AVX2 and FMA (1.4x on the 3D force loop), and with AVX-512 (3D only). Flattened: every call
-// inside (the pair loop, the scene's terms, the kernel) is inlined and so compiled for the copy's
-// instruction set; left to GCC's heuristics, a term that many scenes use (the viscosity) stayed a
-// portable call inside the AVX2 loop, 10 % of a 3D step.
+// with AVX2 and FMA, and with AVX-512 (3D only). Flattened: every call inside (the pair loop, the
+// scene's terms, the kernel) is inlined and so compiled for the copy's instruction set; left to
+// GCC's heuristics, a term that many scenes use (the viscosity) stays a portable call inside the
+// AVX2 loop.
 template <class Visit>
 [[gnu::flatten]] void particles_in_portable(std::size_t k0, std::size_t k1, const NeighbourList& nl, Visit& visit) {
   for (std::size_t k = k0; k < k1; ++k) visit(nl.visit(k));
@@ -164,15 +162,11 @@ template <class Visit>
 
 // visit(i) for every particle i, in the list's visiting order. Each thread starts on one stretch of
 // that order, the stretches holding about equal work (a particle's pairs, plus one for the
-// particle): consecutive particles share most neighbours, which then stay in the thread's cache.
-// With chunks of 256 handed out to threads as they came free, the two threads' chunks interleaved,
-// and evolve's step on two threads took 0.49 s against 0.455 s (N = 1e6, least of two runs each;
-// `sphv bench` at N = 97,336: 1.63-1.72x one thread's speed against 1.94x; measured). A thread done
-// with its stretch takes over the back of another's (core/stretches.hpp): with fixed stretches a
-// slowed core held the other up, and the force loop of evolve's step on two threads took 0.348 s
-// and 0.325 s on average against 0.316 s and 0.298 s (N = 1e6, 64 steps of each, alternating in
-// blocks of 8, two runs; the least step unchanged). Stretches of equal length instead of equal
-// work, stolen from alike, made the least force loop 2 % slower. Each i is handled by one thread
+// particle): consecutive particles share most neighbours, which then stay in the thread's cache
+// (small chunks handed to threads as they come free would interleave the threads' particles). A
+// thread done with its stretch takes over the back of another's (core/stretches.hpp), so that a
+// slowed core does not hold the other up. The stretches hold equal work, not equal length, so
+// that taking over is the exception, not the rule. Each i is handled by one thread
 // and writes only i's outputs, so the result is independent of the thread count and of which
 // thread takes which chunk. The copies compiled are those up to `widest`; the one run is
 // loop_path's (core/isa.hpp).

@@ -16,7 +16,7 @@ template <int D>
 struct Derivatives {
   std::vector<Vec<D>> dvdt;
   std::vector<double> dudt, drhodt, dhdt, mu_max;
-  void reset(std::size_t n) {  // zeros written by all threads (7 MB at N = 125,000 in 3D)
+  void reset(std::size_t n) {  // zeros written by all threads: megabytes in a large run
     for (auto* a : {&dudt, &drhodt, &dhdt, &mu_max}) a->resize(n);
     dvdt.resize(n);
 #pragma omp parallel for if (n >= parallel_threshold)
@@ -77,9 +77,8 @@ struct Neighbourhood {
 };
 
 // A term that only caps the copies of its scene's pair loop the build compiles (core/isa.hpp), for
-// scenes whose runs are small: a copy then costs compile time and saves no run time. The
-// conservation catalogue's 48 3D scenes: their AVX-512 copies took 11.6 s of a clean build, and
-// the case ran in 7.2 s on them against 6.5 s on AVX2 (quick tier, measured).
+// scenes whose runs are small: a copy then costs compile time and saves no run time (the
+// conservation catalogue's 48 3D scenes, whose runs are too small to gain from AVX-512).
 template <IsaPath widest>
 struct WidestLoopCopy {
   static constexpr IsaPath widest_loop_copy = widest;
@@ -98,10 +97,9 @@ struct Scene {
   static constexpr int dim = D;
   std::tuple<Terms...> terms;
   // The positions and velocities one array per dimension, as the pair loop gathers them: buffers
-  // kept from one evaluation to the next. Allocated afresh, each evaluation's 6 x 8 MB (N = 1e6)
-  // went back to the system when freed, and on this project's virtual machines every loop after
-  // that ran up to 10x slower on one thread (a check of every particle 4 -> 34 ms): evolve's step
-  // took 1.10-1.18 s against 0.81-0.91 s with the buffers kept (measured).
+  // kept from one evaluation to the next. Allocated afresh, a large run's columns would go back to
+  // the system when freed and be faulted in again at every evaluation, which on a virtual machine
+  // slows every loop that follows.
   Components<D> xs, vs;
 
   void derivatives(Particles<D>& p, const Neighbourhood<D>& nb, Derivatives<D>& d) {
@@ -158,8 +156,7 @@ struct Scene {
   // (pair_geometry), then every pair's share through the terms, all pairs of the batch in one
   // branch-free loop the compiler vectorises (a pair beyond h_ij, where W and grad W vanish, has
   // its share set to 0), then the shares summed in list order, so the sums do not depend on the
-  // vector width. A term adds to a PairSums that starts at 0 for each pair. The bench's force
-  // loop: 9.6-9.9 -> 7.3-7.4 ns a pair on the AVX2 path (measured, N = 125,000, one thread).
+  // vector width. A term adds to a PairSums that starts at 0 for each pair.
   void sums_of(std::size_t i, IsaPath path, const Particles<D>& p, const Components<D>& xs, const Components<D>& vs,
                const NeighbourList& nl,
                const Vec<D>& L, const Vec<D>& wrap, Derivatives<D>& d) const {

@@ -12,8 +12,8 @@ namespace sph {
 // The particles' storage along the neighbour search's cell order, during a run (evolve). The pair
 // loops visit the particles in that order whatever their storage; stored in it as well, a
 // particle's neighbours lie near it in memory. Particles stored in no spatial order (a snapshot
-// of another code, a shuffled lattice) made evolve's step 3-4x slower at N = 125,000 (one thread,
-// measured); a lattice stored row by row gains nothing. StorageOrder keeps the caller's index of
+// of another code, a shuffled lattice) make every pair loop gather from all over memory, several
+// times slower; a lattice stored row by row gains nothing. StorageOrder keeps the caller's index of
 // each particle stored, so that the caller gets its particles back in its own order.
 template <int D>
 class StorageOrder {

@@ -76,9 +76,8 @@ struct Found {
 
 // With wide h: the candidates k of sorted particle s (particle i) within its own h_s, written to
 // out in stencil order, and the pairs the other end misses (h_k <= |r_sk| < h_s) as (k, i) to
-// miss, both without a branch. Not inlined: inside the search's loop GCC 12 spilled `kept` as a
-// byte and reloaded it as a word, a failed store forwarding per candidate that made the search
-// with a few wide particles 1.9x slower (measured, N = 125,000).
+// miss, both without a branch. Not inlined: inside the search's loop GCC 12 spills `kept` as a
+// byte and reloads it as a word, a failed store forwarding per candidate.
 template <int D>
 [[gnu::noinline]] Found own_reach(std::size_t s, int i, const std::vector<Run<D>>& sten, const Sorted<D>& v,
                                   int* out, std::array<int, 2>* miss) {
@@ -103,11 +102,7 @@ template <int D>
 // front of a 4-lane store (which may write entries past them: the list has room); with `wide`,
 // own_reach: kept within h_s, and the few pairs the other end misses written one by one, in their
 // order. Without FMA, so each lane rounds as the portable loop does: the same lists on every path
-// (verification/tests/grid_search.cpp). The search with the padded h of the reused lists (1.2 h,
-// 91 pairs a particle), one thread: 9.1-9.6 -> 5.1-5.3 ns a listed pair at N = 125,000, 9.5 ->
-// 5.0 at N = 1e6 (measured; the lists the same). With wide h (`sphv bench`'s gas with the central
-// 0.4 % of h four times larger), AVX-512 against the portable own_reach, one thread: N = 97,336
-// 0.095 -> 0.054 s, N = 1e6 0.94 -> 0.52 s (two threads 0.52 -> 0.30 s; measured, the lists the same).
+// (verification/tests/grid_search.cpp).
 template <bool wide>
 [[gnu::target("avx2")]] Found reach_avx2(std::size_t s, int i, const std::vector<Run<3>>& sten, Sorted<3> v, int* out,
                                          std::array<int, 2>* miss) {
@@ -143,8 +138,7 @@ template <bool wide>
 }
 
 // reach_avx2 with AVX-512, eight candidates at a time, compacted by vpcompressd into a register
-// (the form that writes memory is slow on AMD's Zen 4): 5.6 -> 4.5 ns a listed pair (the search
-// above, N = 125,000, one thread; the lists the same). The file is compiled without FMA
+// (the form that writes memory is slow on AMD's Zen 4). The file is compiled without FMA
 // contraction (CMakeLists.txt), which AVX-512 would otherwise allow.
 template <bool wide>
 [[gnu::target(SPH_AVX512_TARGET)]] Found reach_avx512(std::size_t s, int i, const std::vector<Run<3>>& sten,
@@ -211,7 +205,7 @@ inline std::size_t candidates_on([[maybe_unused]] IsaPath path, std::size_t s, c
 }  // namespace
 
 // [[gnu::flatten]]: every callee inlined at -O2 too (the tests' build), where GCC otherwise keeps
-// calls in the candidate loop: measured 0.040 s -> 0.021 s per search of 3e4 particles (-O3 0.019 s).
+// calls in the candidate loop, which then runs at about half -O3's speed.
 template <int D>
 [[gnu::flatten]] void grid_search(const std::vector<Vec<D>>& x, const std::vector<double>& h, const Box<D>& box,
                                   NeighbourList& nl, GridSearchBuffers<D>& buf) {
@@ -257,9 +251,9 @@ template <int D>
     };
     if (!hq.empty() && hmax >= 1.5 * quantile(0.5)) {
       const std::array<double, 4> c{0.5 * quantile(1.0), 0.5 * quantile(0.99), 0.5 * quantile(0.9), 0.5 * quantile(0.5)};
-      // Each candidate's volume summed over fixed blocks of hq, the blocks in order: the same sums on
-      // any thread count. Summed serially, the four took 10.5 ms (N = 1e6 with 0.4 % of h four times
-      // larger, one thread; measured), a thirtieth of the search on two threads.
+      // Each candidate's volume summed over fixed blocks of hq on all threads (serially the sums are
+      // a noticeable share of a threaded search), the blocks in order: the same sums on any thread
+      // count.
       constexpr std::size_t blocks = 64;
       std::array<std::array<double, 4>, blocks> part;
       const std::size_t nq = hq.size();
@@ -432,20 +426,16 @@ template <int D>
       stretches.reset(n, nt);
       chunk_missed.resize(stretches.chunks());
     }
-    // Two rules keep a later search from reallocating a buffer, which faults its pages in again.
-    // (1) Room from the start for all the last search's pairs and an eighth more, whatever share
-    // of them this thread lists (it takes chunks from the others). (2) Short of room (a first
+    // Two rules keep a later search from reallocating a buffer, which would fault its pages in
+    // again. (1) Room from the start for all the last search's pairs and an eighth more, whatever
+    // share of them this thread lists (it takes chunks from the others). (2) Short of room (a first
     // search, a longer list), grown to every particle's pairs at the rate this thread has listed so
-    // far, with an eighth to spare, keeping only the pairs listed (grow_keeping): (1) alone, after a
-    // first search whose buffer grew by doubling, reallocated it at the second (N = 1e6, two
-    // threads: 0.78 s against 0.21 s for the later ones, 90,000 page faults against 1,500-4,600);
-    // (2) alone left a thread that listed few pairs at first, or ran after a search on fewer
+    // far, with an eighth to spare, keeping only the pairs listed (grow_keeping). Both are needed:
+    // (1) alone would reallocate at the second search a buffer that grew by doubling in the first;
+    // (2) alone would leave a thread that listed few pairs at first, or ran after a search on fewer
     // threads, to grow it again later. The pairs for the other end (wide h) are listed pairs too:
-    // their buffer has as much room, unset; grown by doubling and zeroed, it was reallocated
-    // whenever the thread took more wide particles than before. With the central 0.4 % of h four
-    // times larger, one thread's search then two threads' in turn: 3,600-45,000 page faults in each
-    // two-thread search (0.32-0.76 s) before, 25,600 in the first, then fewer at each (7,000 down
-    // to 700 at the sixth: pages first written as the thread takes other chunks; measured).
+    // their buffer has as much room, unset, so that it is not reallocated whenever the thread takes
+    // more wide particles than before.
     auto& js = parts[t];
     auto& mt = missed[t];
     std::size_t used = 0, nm = 0, scanned = 0;  // the pairs this thread listed, those for the other end, its particles

@@ -28,8 +28,7 @@ namespace sph {
 //
 // The search's arrays (the sorted copies, the threads' lists, the list itself) are kept by the
 // caller from one search to the next (GridSearchBuffers): a run that searches every few steps then
-// does not allocate, zero and fault in tens of megabytes each time (measured: a fifth of evolve's
-// time at N = 125,000).
+// does not allocate, zero and fault in tens of megabytes each time.
 template <int D>
 struct GridSearchBuffers {
   std::vector<std::array<int, D>> coord;

@@ -20,8 +20,8 @@ namespace sph {
 namespace {
 
 // A particle's position beside its index. The divisions move the two together, so that they read
-// memory in order (a Gaussian cloud of 1e6 particles stored in random order, one thread: 0.31 s
-// for the tree reading x[order[q]], 0.21 s so).
+// memory in order rather than through x[order[q]], which jumps across memory when the particles
+// are stored in no spatial order.
 template <int D>
 struct Point {
   Vec<D> x;
@@ -223,7 +223,7 @@ Tree<D> build_tree(const std::vector<Vec<D>>& x, const std::vector<double>& m, i
   // reserved here, on the calling thread, for twice a thread's share of 1.5 nodes a leaf (a lattice
   // makes 1.3, a Gaussian cloud 1.5; only the pages written are ever mapped): glibc would serve a
   // list growing on another thread from that thread's own heap, and fault it in again at the next
-  // build (measured: 0.11 -> 0.56 s in every other build of a Gaussian cloud of 1e6 on two threads).
+  // build.
   struct Built {
     int thread, first, size;  // a subtree's place in its thread's list
   };

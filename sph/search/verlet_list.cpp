@@ -72,9 +72,9 @@ inline std::size_t select_range(std::size_t first, std::size_t last, const Neigh
 // pairs_within in 3D with AVX2: four candidates at a time, their sites loaded whole and transposed,
 // the kept ones moved to the front of a 4-lane store (which may write up to three candidates
 // past them, later overwritten or beyond the count). The same operations as the compiled
-// loop with FMA contraction, so the same pairs (verification/tests/grid_search.cpp). Filtering
-// N = 125,000 at the skin of 0.2, one thread: 2.6 -> 2.0 ns a kept pair, the packing of the sites
-// included (measured; the compiled loop from one array per dimension with this compaction: 2.4).
+// loop with FMA contraction, so the same pairs (verification/tests/grid_search.cpp). Sites loaded
+// whole and transposed are faster than gathers from one array per dimension, their packing
+// included.
 [[gnu::target("avx2,fma")]] inline std::size_t pairs_within_avx2(std::size_t i, const int* cj, std::size_t count,
                                                                   const Site* s, const Vec<3>& L, const Vec<3>& wrap,
                                                                   int* js) {
@@ -116,8 +116,6 @@ inline std::size_t select_range(std::size_t first, std::size_t last, const Neigh
 // pairs_within_avx2 with AVX-512, eight candidates at a time: their sites loaded whole, two to a
 // 512-bit register, and transposed; the kept indices compressed to the front of an 8-lane store
 // (which may write up to seven candidates past them). The same operations, so the same pairs.
-// Filtering at the skin of 0.2, one thread, least of 8-50 runs: N = 97,336 12.7 -> 9.2 ms,
-// N = 1e6 0.135-0.139 -> 0.109-0.116 s (on two threads 0.074 -> 0.060-0.063 s; measured).
 [[gnu::target(SPH_AVX512_TARGET)]] inline std::size_t pairs_within_avx512(std::size_t i, const int* cj,
                                                                           std::size_t count, const Site* s,
                                                                           const Vec<3>& L, const Vec<3>& wrap,

@@ -44,9 +44,8 @@ extern template std::size_t select_pairs<3>(IsaPath, std::size_t, std::size_t, c
 //   (a) d_k + g_k <= skin h0_k / 2 for every k (particles that move, each by its own h), or
 //   (b) 2 max_k d_k + g_k <= skin h0_k for every k (particles at rest while h changes, as in (50)).
 // Each evaluation gets the pairs of the padded list that interact, as a fresh search would list
-// them; filtering costs about a sixth of a grid search (0.015 s against 0.084 s at N = 125,000 on
-// one thread; the search tests ~3.7x more candidates). The padding is dropped where it would
-// exceed half a periodic box.
+// them; filtering costs a fraction of a grid search, which tests several times more candidates.
+// The padding is dropped where it would exceed half a periodic box.
 template <int D>
 class VerletList {
  public:
@@ -127,13 +126,12 @@ class VerletList {
   // (core/stretches.hpp: their own stretch, then the back of a slower thread's), each into its own
   // buffer, and the chunks are joined in the rows' order: independent of the thread count and of
   // which thread filtered which chunk. Thread 0's own chunks open the joined list: it filters
-  // them straight into it. The buffers (160 MB a thread at N = 1e6 on 2 threads) are kept from one
-  // evaluation to the next. Allocated afresh, they made evolve's step there 1.34-1.43x the time of
-  // a step with a fresh search and no filter; kept, 0.97-1.08x (`sphv bench`, measured back to back).
-  // Each has room for every candidate: a thread may filter any share of them, and its pages are
-  // touched only where it writes. Grown by doubling as needed instead, a buffer grew again whenever
-  // its thread took a larger share than before, each time faulting in a fresh block: evolve's step
-  // in `sphv bench` (N = 1e6, two threads) took 0.437 s, and 0.379 s with this room.
+  // them straight into it. The buffers (large: room for every candidate) are kept from one
+  // evaluation to the next, so that an evaluation does not fault fresh pages in: allocated afresh,
+  // they would make a step with reused lists slower than one with a fresh search. Each has room for
+  // every candidate: a thread may filter any share of them, and its pages are touched only where
+  // it writes. Grown by doubling as needed instead, a buffer would grow again, into a fresh block,
+  // whenever its thread took a larger share than before.
   void select(const std::vector<Vec<D>>& x, const std::vector<double>& h, const Box<D>& box) {
     const std::size_t n = x.size();
     const Vec<D> L = box.length(), wrap = box.wrap_factor();
