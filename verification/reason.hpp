@@ -16,8 +16,8 @@ struct Sweep;
 std::string fill_reason(const std::string& why, const Sweep& s);
 // The same text for `sphv info`, before any run: each placeholder named in words.
 std::string describe_reason(const std::string& why);
-// The reason with every placeholder and every allowed integer (equation numbers "(38)", chapter
-// sections, dimensions "2D", exponents "^2") removed: what must hold no typed-in measurement.
+// The reason with every placeholder, equation number "(38)" and chapter section "section 9.5"
+// removed: what must hold no typed-in measurement.
 std::string reason_without_placeholders(const std::string& why);
 
 }  // namespace sphv

@@ -155,7 +155,7 @@ const Registration reg{Case{
                choice_param("integrator", "kdk", "leapfrog: kick-drift-kick or the chapter's", {"kdk", "chapter"})},
     .levels = levels,
     .orders = [](const Params&) {
-      const std::string why = "no order: where 9.5 applies the drift is round-off, independent of n";
+      const std::string why = "no order: where section 9.5 applies the drift is round-off, independent of n";
       return OrderClaims{{"momentum_symmetric", no_order(why)}, {"angular_symmetric", no_order(why)},
                          {"energy_rate_conserving", no_order(why)},
                          {"energy_drift_conserving", no_order("no order in n: the leapfrog's O(dt^2) error at fixed steps")}};

@@ -62,15 +62,18 @@ Result run(const Params& p) {
 
 std::vector<Check> gates(const Sweep& s) {
   std::vector<Check> c;
-  const std::string preset = find_case(s.case_name).parse(s.settings).text("preset");
+  const Params p = find_case(s.case_name).parse(s.settings);
+  const std::string preset = p.text("preset");
+  const bool lattice_exact = p.real("hfact") == 2.0 || p.real("hfact") == 4.0;
   for (std::size_t k = 0; k < s.runs.size(); ++k) {
     const auto& r = s.runs[k];
     const std::string level = "n" + std::to_string(s.levels[k]);
     c.push_back({level + "_stable", double(r.verdict == "stable"), 1.0, 1.0, "runs to t_end with a finite, positive state"});
     if (r.verdict != "stable") continue;
-    // Measured L1(rho) at n = 200, 400, 800 (one thread): toro2 0.00667, 0.00419, 0.00255; toro3
-    // (energy 38) 0.0177, 0.0252, 0.0199. Bound at every level: the largest measured + 20 %.
-    const double tol = 1.2 * (preset == "toro2" ? 0.00667 : 0.0252);
+    // Measured L1(rho) at n = 200, 400, 800, 1600 (one thread): toro2 0.00667, 0.00419, 0.00255;
+    // toro3 (energy 38) at hfact 2.4 0.0177, 0.0252, 0.0199, 0.0244, at hfact 2 0.0189, 0.0139,
+    // 0.0093, 0.0068. Bound at every level: the largest measured + 20 %.
+    const double tol = 1.2 * (preset == "toro2" ? 0.00667 : lattice_exact ? 0.0189 : 0.0252);
     c.push_back({level + "_L1_rho", r.errors.at("L1_rho"), 0.0, tol,
                  "L1(rho) against the exact Riemann solution (largest measured on 200..800 + 20 %)",
                  Check::Kind::verification, "L1_rho"});
@@ -89,21 +92,30 @@ const Registration reg{Case{
                real_param("hfact", 2.4, "initial support radius / spacing", 0.0),
                real_param("C", 0.3, "Courant number", 0.0),
                integer_param("max_steps", 200000, "step budget (ends with a verdict)")},
-    .levels = {.quick = {200}, .standard = {200, 400, 800}, .full = {200, 400, 800}},
+    // Two levels in quick, so that CI gates every order claim; toro3 from n = 400, below which its
+    // local orders are not yet first order at either hfact.
+    .levels = {.quick = {200, 400}, .standard = {200, 400, 800}, .full = {200, 400, 800, 1600}},
     // toro2: local orders 0.67, 0.72 on 200..800 (fit 0.69), band 0.5 around 1 (pre-asymptotic, as
-    // sod). toro3: non-monotone on 200..800 (the blast's dense shell, ~0.02 wide at t_end, holds a
-    // handful of particles at n = 200): no order, bounded.
+    // sod). toro3: the post-shock lattice keeps h/dx = hfact, and at 2.4 the kernel's lattice sums
+    // (noh.cpp) hold L1 at a level that does not fall with n; at hfact 2, where the 1D sums are
+    // exact, it converges (local orders 0.44, 0.58, 0.46 on 200..1600).
     .orders = [](const Params& p) {
-      if (p.text("preset") == "toro3")
-        return OrderClaims{{"L1_rho", no_order("the blast wave's dense shell is a few particles wide at these n: L1 "
-                                               "0.0177, 0.0252, 0.0199 at n = 200, 400, 800 (non-monotone); bounded")}};
-      return OrderClaims{{"L1_rho", {1.0, 0.5, "discontinuities limit L1 convergence to first order; measured 0.69 "
-                                              "on 200..800 (pre-asymptotic)"}}};
+      const OrderClaim first{1.0, 0.5, "discontinuities limit L1 convergence to first order"};
+      if (p.text("preset") == "toro3" && p.real("hfact") != 2.0 && p.real("hfact") != 4.0)
+        return OrderClaims{{"L1_rho", known_failure(1.0, 0.5,
+                                                    "fixed-h/dx lattice-sum floor behind the blast wave: L1 {L1_rho} "
+                                                    "at {levels} does not fall with n at this hfact",
+                                                    "preset=toro3,energy=38,hfact=2")}};
+      return OrderClaims{{"L1_rho", first}};
     },
     .error_defs = {{"L1_rho", "sum_i (m_i/rho_i) |rho_i - rho_exact(x_i)| / sum_i m_i/rho_i over the tube at t_end "
                               "(exact Riemann solution)"}},
     // toro3 with (41) (energy=auto) goes to u < 0 in the first step (measured): not a gate variant.
-    .variants = {{"preset=toro2"}, {"preset=toro3", "energy=38"}},
+    .variants = {{"preset=toro2"}, {"preset=toro3", "energy=38"}, {"preset=toro3", "energy=38", "hfact=2"}},
+    .levels_for = [](const Params& p) {
+      if (p.text("preset") == "toro3") return Levels{.quick = {400, 800}, .standard = {200, 400, 800}, .full = {200, 400, 800, 1600}};
+      return Levels{.quick = {200, 400}, .standard = {200, 400, 800}, .full = {200, 400, 800, 1600}};
+    },
     .validate = {},
     .run = run,
     .gates = gates,

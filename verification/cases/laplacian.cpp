@@ -121,8 +121,8 @@ OrderClaims orders(const Params& p) {
   // (73) off the diagonal needs isotropic fourth lattice moments: 1D only (2D/3D level off).
   o["tensor_73"] = p.integer("dim") == 1 ? two
                                          : no_order("tensor (73) in 2D/3D: its off-diagonal part needs isotropic fourth "
-                                                    "lattice moments and falls slower than h^2 towards a floor (measured "
-                                                    "2.4e-2 in 2D and 1.9e-2 in 3D at n = 64, 1.2 and 1.6 over 16-64)");
+                                                    "lattice moments, which a cubic lattice at fixed h/dx does not have: "
+                                                    "a floor ({tensor_73} at {levels}, order {order.tensor_73})");
   return o;
 }
 

@@ -8,6 +8,7 @@
 #include "sph/hydro/forms.hpp"
 #include "verification/case.hpp"
 #include "verification/cases/hydro_step_params.hpp"
+#include "verification/cases/lattice_sums.hpp"
 #include "verification/cases/sod_errors.hpp"
 #include "verification/cases/sod_tube.hpp"
 #include "verification/sweep.hpp"
@@ -127,6 +128,9 @@ Result run(const Params& p) {
              {"energy_rate", run.energy_rate},
              {"mass_drift", run.mass_drift},
              {"conservation_note", "active particles only; the boundary layers exert the end pressures"}};
+  const LatticeSums sums = lattice_sums<D>(p.real("hfact"));
+  r.extra["lattice_S0_minus_1"] = sums.S0 - 1.0;
+  r.extra["lattice_S1_minus_1"] = sums.S1 - 1.0;
   const char* axes[] = {"x", "y", "z"};
   for (int d = 0; d < D; ++d) r.particles.add(axes[d], run.position[d]);
   r.particles.add("vx", run.v);
@@ -176,7 +180,7 @@ std::string variant_key(const Params& p) {
 }
 
 // Measured errors {L1_rho, L1_v, L1_p, L1_u} at the finest quick level of every variant the
-// catalogue runs (1D n = 800, 2D n = 100, 3D n = 16; one thread, this code, 2026-11-30). The
+// catalogue runs (1D n = 800; 2D and 3D below; one thread). The
 // bound on each error at the finest level of a sweep is the measured value + 20 % (errors fall
 // with n, so it holds on the standard levels too); a method change of the size the variants
 // show (visc_h=full against half: +45 % in L1_rho) breaks it. Continuity (29) does not converge:
@@ -194,14 +198,25 @@ const std::map<std::string, Errors4> measured_1d = {
     {"integrator=chapter", {4.009e-3, 1.720e-2, 4.934e-3, 2.266e-2}},
     {"visc_h=full", {5.808e-3, 2.907e-2, 7.025e-3, 3.435e-2}},
 };
-const std::map<std::string, Errors4> measured_2d = {{"default", {1.909e-2, 4.892e-2, 2.057e-2, 5.120e-2}}};
-const std::map<std::string, Errors4> measured_3d = {{"default", {4.819e-2, 1.230e-1, 6.655e-2, 1.707e-1}}};
+// 2D: n = 200 (hfact 2.4), 100 (hfact 4); 3D: n = 24 (hfact 2.4), 16 (hfact 4).
+const std::map<std::string, Errors4> measured_2d = {{"default", {1.528e-2, 3.821e-2, 1.668e-2, 4.012e-2}},
+                                                   {"hfact=4", {1.500e-2, 4.374e-2, 1.677e-2, 6.523e-2}}};
+const std::map<std::string, Errors4> measured_3d = {{"default", {4.474e-2, 1.095e-1, 5.945e-2, 1.452e-1}},
+                                                   {"hfact=4", {3.938e-2, 1.141e-1, 4.919e-2, 1.916e-1}}};
 constexpr double bound_margin = 1.2, floor_fraction = 0.5;
 
 const Errors4* measured(const Params& p, int dim) {
   const auto& table = dim == 1 ? measured_1d : dim == 2 ? measured_2d : measured_3d;
   const auto it = table.find(variant_key(p));
   return it == table.end() ? nullptr : &it->second;
+}
+
+// 2D/3D lattices at a support ratio where the kernel's lattice sums are off by more than 0.1 %
+// (lattice_sums.hpp): 2.4 gives S1 - 1 = -0.9 % (2D), -1.8 % (3D); 4 gives -0.09 %, -0.005 %.
+bool lattice_floor(const Params& p, int dim) {
+  if (dim == 1) return false;
+  const LatticeSums l = dim == 2 ? lattice_sums<2>(p.real("hfact")) : lattice_sums<3>(p.real("hfact"));
+  return std::abs(l.S1 - 1.0) > 1e-3 || std::abs(l.S0 - 1.0) > 1e-3;
 }
 
 // Per level: stable, or (timestep=chapter) unstable as predicted. Then a bound on each error at
@@ -236,11 +251,11 @@ std::vector<Check> tube_gates(const Sweep& s, int dim) {
                        : "finest level: measured " + std::to_string(v) + " at the finest quick level + 20 %",
                  Check::Kind::verification, name});
   }
-  if (dim > 1 && fine.errors.count("L1_rho") && s.runs.front().errors.count("L1_rho"))
-    // 2D/3D: the error must fall with resolution (measured finest / coarsest quick level: 0.64 in
-    // 2D, 0.83 in 3D).
+  if (dim > 1 && !lattice_floor(p, dim) && fine.errors.count("L1_rho") && s.runs.front().errors.count("L1_rho"))
+    // 2D/3D at hfact 4: the error must fall with resolution (measured finest / coarsest level:
+    // 0.62 in 2D on 50..200, 0.71 in 3D on 16..32).
     c.push_back({"L1_rho_falls", fine.errors.at("L1_rho") / s.runs.front().errors.at("L1_rho"), 0.0, 0.9,
-                 "finest / coarsest level: must fall with resolution (measured 0.64 in 2D, 0.83 in 3D)",
+                 "finest / coarsest level: must fall with resolution (measured 0.62 in 2D, 0.71 in 3D)",
                  Check::Kind::verification, "L1_rho"});
   return c;
 }
@@ -266,9 +281,17 @@ OrderClaims first_order(const Params& p, int dim) {
   if (p.text("density") == "continuity29")
     claim = no_order("(29) is the Eulerian rate: wrong by v . grad rho at the moving contact, an O(1) error that "
                      "does not converge; gated to stay above a floor (half its measured value)");
-  else if (dim > 1)
-    claim = no_order("2D/3D lattices: orders 0.2-0.7 on the affordable levels (pre-asymptotic, transverse lattice "
-                     "noise); bounded, and L1_rho gated to fall with resolution");
+  else if (lattice_floor(p, dim))
+    // The tube's lattices keep h/dx = hfact on either side and, behind the shock and in the
+    // rarefaction, an anisotropically compressed lattice whose sums are further off: the errors
+    // stop falling at a level set by hfact, not n. The variant at hfact 4 (sums within 0.1 %)
+    // converges.
+    claim = known_failure(1.0, 0.5,
+                          "fixed-h/dx lattice-sum floor: on the initial lattice at this hfact the kernel's density sum "
+                          "is off by {extra.lattice_S0_minus_1} and the pressure force's momentum flux by "
+                          "{extra.lattice_S1_minus_1} (more on the lattice compressed behind the shock), whatever n; "
+                          "L1_rho {L1_rho} at {levels}",
+                          "hfact=4");
   if (!measured(p, dim))
     claim = no_order("settings outside the catalogue's variants: no measured bound, only the verdict is gated");
   return {{"L1_rho", claim}, {"L1_v", claim}, {"L1_p", claim}, {"L1_u", claim}};
@@ -309,10 +332,23 @@ Case make_case(int dim) {
                   {"visc_h=full"}};
     c.run = run<1>;
   } else if (dim == 2) {
-    c.levels = {.quick = {25, 50, 100}, .standard = {50, 100, 200}, .full = {50, 100, 200}};
+    // Quick: two levels each, so that CI gates the order (hfact 2.4: the known failure; 4: the claim).
+    c.levels = {.quick = {100, 200}, .standard = {100, 200, 400}, .full = {100, 200, 400, 800}};
+    c.variants = {{}, {"hfact=4"}};
+    c.levels_for = [](const Params& p) {
+      if (p.real("hfact") == 4.0) return Levels{.quick = {50, 100}, .standard = {50, 100, 200}, .full = {50, 100, 200, 400}};
+      return Levels{.quick = {100, 200}, .standard = {100, 200, 400}, .full = {100, 200, 400, 800}};
+    };
     c.run = run<2>;
   } else {
-    c.levels = {.quick = {12, 16}, .standard = {12, 16, 24, 32}, .full = {12, 16, 24, 32}};
+    // hfact 4 costs about ten times as much a particle (4.6x the neighbours, 4x the particles
+    // across): one level in quick.
+    c.levels = {.quick = {16, 24}, .standard = {16, 24, 32}, .full = {16, 24, 32, 48}};
+    c.variants = {{}, {"hfact=4"}};
+    c.levels_for = [](const Params& p) {
+      if (p.real("hfact") == 4.0) return Levels{.quick = {16}, .standard = {16, 24, 32}, .full = {16, 24, 32, 48}};
+      return Levels{.quick = {16, 24}, .standard = {16, 24, 32}, .full = {16, 24, 32, 48}};
+    };
     c.run = run<3>;
   }
   c.gates = [dim](const Sweep& s) { return tube_gates(s, dim); };
