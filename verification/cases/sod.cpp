@@ -251,7 +251,8 @@ std::vector<Check> tube_gates(const Sweep& s, int dim) {
                        : "finest level: measured " + std::to_string(v) + " at the finest quick level + 20 %",
                  Check::Kind::verification, name});
   }
-  if (dim > 1 && !lattice_floor(p, dim) && fine.errors.count("L1_rho") && s.runs.front().errors.count("L1_rho"))
+  if (dim > 1 && !lattice_floor(p, dim) && s.runs.size() >= 2 && fine.errors.count("L1_rho") &&
+      s.runs.front().errors.count("L1_rho"))
     // 2D/3D at hfact 4: the error must fall with resolution (measured finest / coarsest level:
     // 0.62 in 2D on 50..200, 0.71 in 3D on 16..32).
     c.push_back({"L1_rho_falls", fine.errors.at("L1_rho") / s.runs.front().errors.at("L1_rho"), 0.0, 0.9,
