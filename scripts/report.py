@@ -21,7 +21,7 @@ from urllib.parse import quote
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import report_figures as figs  # noqa: E402
-from report_data import (counts, errors_of, expected_text, fmt, is_dirty, load, num, order_text,  # noqa: E402
+from report_data import (counts, errors_of, expected_text, file_of, fmt, is_dirty, load, num, order_text,  # noqa: E402
                          provenances, read_json, row_reason, slug, sweep_wide_failures)
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -190,7 +190,7 @@ def check_rows(s, checks):
 
 
 def figure_html(out, stem, caption):
-    png, pdf = (quote(stem.with_suffix(x).relative_to(out).as_posix()) for x in (".png", ".pdf"))
+    png, pdf = (quote(file_of(stem, x).relative_to(out).as_posix()) for x in ("png", "pdf"))
     return (f"<figure><a href='{e(png)}'><img src='{e(png)}' alt='{e(caption)}'></a>"
             f"<figcaption>{e(caption)} (<a href='{e(pdf)}'>PDF</a>)</figcaption></figure>")
 

@@ -150,6 +150,12 @@ def is_dirty(prov):
         or str(prov.get("git_commit", "")).endswith("-dirty")
 
 
+def file_of(stem, ext):
+    """A figure's file: its stem and the extension ext ("png", "pdf"). Stems hold dots (a variant
+    "gamma=1.4" gives "gamma_1.4_..."), which Path.with_suffix would take for an extension to replace."""
+    return stem.parent / f"{stem.name}.{ext}"
+
+
 def slug(text):
     return re.sub(r"[^A-Za-z0-9_.-]+", "_", str(text)).strip("_") or "x"
 

@@ -7,7 +7,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import matplotlib.ticker  # noqa: E402
 import numpy as np  # noqa: E402
 
-from report_data import claim, num, series, wrap  # noqa: E402
+from report_data import claim, file_of, num, series, wrap  # noqa: E402
 
 plt.rcParams.update({"pdf.fonttype": 42, "font.size": 8, "axes.titlesize": 9, "legend.fontsize": 7})
 
@@ -18,7 +18,7 @@ def save(fig, stem):
     # constrained layout cost a further draw of every figure, nearly doubling the report's time.
     fig.subplots_adjust(left=0.16, right=0.97, bottom=0.15, top=0.89)
     for ext in ("png", "pdf"):
-        fig.savefig(stem.with_suffix(f".{ext}"), dpi=110)
+        fig.savefig(file_of(stem, ext), dpi=110)
     plt.close(fig)
     return stem
 

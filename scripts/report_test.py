@@ -14,11 +14,12 @@ import shutil
 import subprocess
 import sys
 from pathlib import Path
+from urllib.parse import unquote
 
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
 from report_check_links import broken_links  # noqa: E402
-from report_data import num, series, slug  # noqa: E402
+from report_data import file_of, num, series, slug  # noqa: E402
 
 failures = []
 
@@ -31,6 +32,25 @@ def expect(cond, what):
 def report(results, reports, *extra):
     return subprocess.run([sys.executable, str(HERE / "report.py"), str(results), "--name", "t", "--reports", str(reports), *extra],
                           capture_output=True, text=True)
+
+
+def distinct_figures(out, stdout):
+    """Every figure entry of every page has its own PNG and PDF: a name cut short (at a dot, say)
+    makes several entries show one file, which the link check cannot see."""
+    entries = []
+    for page in sorted(out.glob("*.html")):
+        for fig in re.findall(r"<figure>.*?</figure>", page.read_text()):
+            png = re.search(r"<img src='([^']+)'", fig).group(1)
+            pdf = re.search(r"<a href='([^']+\.pdf)'>PDF</a>", fig).group(1)
+            entries.append((page.name, unquote(png), unquote(pdf)))
+    for k, ext in ((1, "PNG"), (2, "PDF")):
+        files = [x[k] for x in entries]
+        shared = sorted({f for f in files if files.count(f) > 1})
+        expect(not shared, f"figure entries sharing a {ext} file: {shared}")
+    on_disk = len(list(out.glob("fig/**/*.png")))
+    expect(on_disk == len(entries), f"{on_disk} PNG files under fig/ for {len(entries)} figure entries")
+    m = re.search(r"; (\d+) figures\)", stdout)
+    expect(m and int(m.group(1)) == len(entries), f"report.py says {m and m.group(1)} figures, the pages show {len(entries)}")
 
 
 def main():
@@ -67,12 +87,13 @@ def main():
             stem = fig / f"{slug(s['variant'])}_{slug(r['error'])}_convergence"
             want = num(r.get("expected")) and len(series(s, r["error"])) >= 2
             for ext in ("png", "pdf"):
-                expect(stem.with_suffix(f".{ext}").is_file() == want,
+                expect(file_of(stem, ext).is_file() == want,
                        f"{s['case']} {s['variant']} {r['error']}: convergence {ext} {'missing' if want else 'drawn without an order claim'}")
             if want:
                 expect((fig / f"wall_{slug(r['error'])}.pdf").is_file(), f"{s['case']} {r['error']}: no run-time figure")
     for png in out.glob("fig/**/*.png"):
-        expect(png.with_suffix(".pdf").is_file(), f"{png.name} has no PDF")
+        expect(png.with_name(png.name[:-4] + ".pdf").is_file(), f"{png.name} has no PDF")
+    distinct_figures(out, res.stdout)
     if mutants:
         km = json.loads(Path(mutants).read_text())
         killed = sum(bool(m["killed"]) for m in km["mutants"])

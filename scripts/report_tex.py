@@ -10,7 +10,7 @@ import shutil
 import unicodedata
 from pathlib import Path
 
-from report_data import f2, fmt, is_dirty, num, provenances, row_reason, slug, sweep_wide_failures
+from report_data import f2, file_of, fmt, is_dirty, num, provenances, row_reason, slug, sweep_wide_failures
 
 FAIL = r"\textbf{FAIL}"
 TABLE_ROWS = 48  # rows per tabular: a float taller than a page cannot be placed (footnotesize, a4/letter)
@@ -97,9 +97,11 @@ def tables(head, spec, lines, caption, label):
 
 
 def copy_figure(case, stem, figs):
-    """Copies a figure's PDF into the bundle (named after its case: stems repeat across cases)."""
-    name = f"{slug(case)}_{stem.stem}.pdf"
-    shutil.copy(stem.with_suffix(".pdf"), figs / name)
+    """Copies a figure's PDF into the bundle, named after its case (stems repeat across cases),
+    with the stem's dots spelled "p" ("gamma_1p4"): graphicx takes a file name's first dot for
+    the start of its extension."""
+    name = f"{slug(case)}_{stem.name}".replace(".", "p") + ".pdf"
+    shutil.copy(file_of(stem, "pdf"), figs / name)
     return name
 
 
