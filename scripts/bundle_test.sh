@@ -6,6 +6,10 @@
 #   bundle_test.sh dirty RESULTS WORK      a copy of the scripts in a scratch git repository: a tracked
 #                                         change or an untracked file under verification/ is refused
 #                                         (exit 2), --allow-dirty and a clean tree are not
+#   bundle_test.sh reproduce RESULTS WORK  a bundle of RESULTS relabelled as produced at the commit of a
+#                                         scratch repository (bundle.sh there a stub), by its full and its
+#                                         12-character hash: reproduce.sh runs in a clone at that commit
+#                                         and refuses one at another
 set -uo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 mode=$1 results=$(cd "$2" && pwd) work=$3
@@ -28,6 +32,38 @@ if [ "$mode" = compiles ]; then
     [ -s "$work/bundle/$pdf" ] || fail "included figure $pdf missing"
   done
   echo "PASS: verification.tex $pages pages; supplement $(grep -o '([0-9]* pages\?' "$work/bundle/example-supplement.log" | tr -d '(')"
+  exit 0
+fi
+
+if [ "$mode" = reproduce ]; then
+  repo=$work/repo
+  mkdir -p "$repo/scripts" && cd "$repo" || exit 1
+  printf '#!/usr/bin/env bash\necho "bundle.sh stub: $*"\n' > scripts/bundle.sh
+  git init -q . && git add . && git -c user.name=t -c user.email=t@t commit -qm scratch || fail "git"
+  commit=$(git rev-parse HEAD)
+  py=$(bash "$root/scripts/find-python.sh") || exit 1
+  git clone -q "$repo" "$work/clone" || fail "git clone"
+  # sphv records the full hash; results from before it did hold 12 characters: both reproduce.
+  for recorded in "$commit" "${commit:0:12}"; do
+    rm -rf "$work/results" && cp -r "$results" "$work/results"
+    "$py" - "$work/results" "$recorded" <<'EOF_PY' || fail "relabelling the results"
+import json, sys
+from pathlib import Path
+for f in Path(sys.argv[1]).glob("**/sweep.json"):
+    s = json.loads(f.read_text())
+    for r in s["runs"]:
+        r["provenance"]["git_commit"] = sys.argv[2]
+    f.write_text(json.dumps(s))
+EOF_PY
+    "$py" "$root/scripts/report.py" "$work/results" --reports "$work/reports" --bundle "$work/bundle" >/dev/null || fail "report.py --bundle"
+    out=$(cd "$work/clone" && git checkout -q "$commit" && bash "$work/bundle/reproduce.sh" 2>&1) ||
+      fail "reproduce.sh of results at $recorded, in a clone at that commit, refused: $out"
+    [ "$out" = "bundle.sh stub: --tier quick --out bundle" ] || fail "reproduce.sh did not run bundle.sh as expected: $out"
+  done
+  cd "$work/clone" && git -c user.name=t -c user.email=t@t commit -q --allow-empty -m later || fail "git commit"
+  out=$(bash "$work/bundle/reproduce.sh" 2>&1); rc=$?
+  [ $rc -eq 2 ] && [[ "$out" == *"check out commit ${commit:0:12}"* ]] || fail "reproduce.sh at another commit: exit $rc: $out"
+  echo "PASS: reproduce.sh runs in a clone at $commit and refuses a clone at another commit"
   exit 0
 fi
 

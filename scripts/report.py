@@ -22,7 +22,7 @@ from urllib.parse import quote
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import report_figures as figs  # noqa: E402
 from report_data import (counts, errors_of, expected_text, file_of, fmt, is_dirty, load, num, order_text,  # noqa: E402
-                         provenances, read_json, row_reason, slug, sweep_wide_failures)
+                         provenances, read_json, row_reason, slug, sweep_wide_failures, threads_text)
 
 ROOT = Path(__file__).resolve().parent.parent
 CSS = """body{font-family:sans-serif;max-width:1250px;margin:auto;padding:0 12px;line-height:1.35}
@@ -91,12 +91,15 @@ def point_files(results, out, s):
 
 def provenance_html(sweeps, tier):
     provs = provenances(sweeps)
-    keys = ["git_commit", "build_type", "compiler", "cxx_flags", "isa_path", "host", "cpu", "cores", "threads"]
+    keys = ["git_commit", "build_type", "compiler", "cxx_flags", "isa_path", "host", "cpu", "cores"]
     parts = [f"<b>tier</b> {e(tier)}"]
     for k in keys:
         vals = sorted({str(p.get(k)) for p in provs if k in p})
         if vals:
             parts.append(f"<b>{e(k)}</b> {e(' | '.join(vals))}" + (" <span class='fail'>(mixed)</span>" if len(vals) > 1 else ""))
+    threads = sorted({p["threads"] for p in provs if num(p.get("threads"))})
+    if threads:  # points run on different counts by design (sphv verify gives long ones every core)
+        parts.append(f"<b>threads per point</b> {threads[0]}" + (f" to {threads[-1]} (each run's count: case pages)" if len(threads) > 1 else ""))
     dirty = sum(is_dirty(p) for p in provs)
     parts.append(f"<b>tree</b> <span class='fail'>dirty in {dirty} of {len(provs)} runs</span>" if dirty else
                  "<b>tree</b> clean (no run records uncommitted changes)")
@@ -249,7 +252,8 @@ def case_page(case, ss, results, out, made):
         stem = figs.wall_time(case, ss, err, figdir / f"wall_{slug(err)}")
         if stem:
             made.append((case, None, err, "wall", stem))
-            walls.append(figure_html(out, stem, f"{err} against the wall time of each run, every variant"))
+            walls.append(figure_html(out, stem, f"{err} against the wall time of each run, every variant; "
+                                                  f"runs on {threads_text(r for s in ss for r in s['runs'])}"))
     if walls:
         body.append("<h3>Error against run time</h3><div class='figs'>" + "".join(walls) + "</div>")
     for s in ss:
@@ -276,13 +280,14 @@ def case_page(case, ss, results, out, made):
             body.append("</table>")
 
     body.append("<h2>Runs and their files</h2><table><tr><th>variant</th><th>n</th><th>particles</th><th>wall s</th>"
-                "<th>verdict</th><th>files</th></tr>")
+                "<th>threads</th><th>verdict</th><th>files</th></tr>")
     for s in ss:
         links = point_files(results, out, s)
         for n, run, have in zip(s["levels"], s["runs"], links):
             files = " ".join(f"<a href='{e(quote(rel))}'>{e(name)}</a>" for name, rel in have) or "(not kept)"
             body.append(f"<tr><td>{e(s['variant'])}</td><td class='num'>{n}</td><td class='num'>{run.get('n_particles', '–')}</td>"
-                        f"<td class='num'>{fmt(run.get('wall_time_s'), '.3g')}</td><td>{e(run.get('verdict', ''))}</td><td>{files}</td></tr>")
+                        f"<td class='num'>{fmt(run.get('wall_time_s'), '.3g')}</td><td class='num'>{run.get('provenance', {}).get('threads', '–')}</td>"
+                        f"<td>{e(run.get('verdict', ''))}</td><td>{files}</td></tr>")
     body.append("</table>")
     return page(f"sphv: {case}", "".join(body))
 

@@ -143,6 +143,14 @@ def provenances(sweeps):
     return [run.get("provenance", {}) for ss in sweeps.values() for s in ss for run in s["runs"]]
 
 
+def threads_text(runs):
+    """The OpenMP threads the runs ran on, each run's own count: "1 thread", "1 to 2 threads"."""
+    t = sorted({r["provenance"]["threads"] for r in runs if num(r.get("provenance", {}).get("threads"))})
+    if not t:
+        return "threads not recorded"
+    return f"{t[0]} thread{'s' if t[-1] != 1 else ''}" if len(t) == 1 else f"{t[0]} to {t[-1]} threads"
+
+
 def is_dirty(prov):
     """A result produced by a tree with uncommitted changes (any of the spellings provenance uses)."""
     tree = prov.get("source_tree")

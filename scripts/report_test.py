@@ -3,7 +3,8 @@
 reader relies on: no warning on stderr, every href and src resolves inside the folder, the
 counts at the top match the rows of the sweep.json files, a convergence figure (PNG and PDF)
 for every claimed error of every variant and none for errors without an order claim, a
-run-time figure per claimed error, and with --mutants the kill matrix page. With --dirty it
+run-time figure per claimed error, every figure entry its own file, the bundle's provenance
+(each point's own threads, dates and wall time), and with --mutants the kill matrix page. With --dirty it
 also checks that a bundle of results whose provenance records a dirty tree is refused
 (--allow-dirty is exercised by bundle_test.sh).
 
@@ -51,6 +52,30 @@ def distinct_figures(out, stdout):
     expect(on_disk == len(entries), f"{on_disk} PNG files under fig/ for {len(entries)} figure entries")
     m = re.search(r"; (\d+) figures\)", stdout)
     expect(m and int(m.group(1)) == len(entries), f"report.py says {m and m.group(1)} figures, the pages show {len(entries)}")
+
+
+def bundle_checks(results, work, sweeps):
+    """The bundle's provenance takes each point's own threads, dates and wall time (result.json),
+    not the process that wrote sweep.json; each figure of the supplement is its own file."""
+    res = report(results, work, "--bundle", str(work / "bundle"))
+    expect(res.returncode == 0, f"bundle: exit {res.returncode} {res.stderr}")
+    runs = [r for s in sweeps for r in s["runs"]]
+    threads = sorted({r["provenance"]["threads"] for r in runs})
+    dates = sorted(r["provenance"]["date"] for r in runs)
+    prov = json.loads((work / "bundle" / "provenance.json").read_text())
+    expect(prov.get("threads_per_point") == threads, f"provenance.json threads {prov.get('threads_per_point')}, the points ran on {threads}")
+    expect(prov.get("points_ran") == [dates[0], dates[-1]], f"provenance.json points_ran {prov.get('points_ran')}, points ran {dates[0]} to {dates[-1]}")
+    wall = sum(r["wall_time_s"] for r in runs)
+    expect(abs(prov.get("points_wall_time_s", -1) - wall) < 1e-9 * wall, f"provenance.json wall time {prov.get('points_wall_time_s')}, points {wall}")
+    main_tex = (work / "bundle" / "verification.tex").read_text()
+    said = f"{threads[0]} to {threads[-1]} OpenMP threads per point" if len(threads) > 1 else f"{threads[0]} OpenMP thread"
+    expect(said in main_tex, f"verification.tex does not say '{said}'")
+    supp = (work / "bundle" / "verification-supplement.tex").read_text()
+    included = re.findall(r"\\includegraphics\[[^]]*\]\{figures/([^}]*)\}", supp)
+    shared = sorted({f for f in included if included.count(f) > 1})
+    expect(included and not shared, f"supplement figures sharing a file: {shared}")
+    m = re.search(r"; (\d+) figures\)", res.stdout)
+    expect(m and int(m.group(1)) == len(included), f"supplement includes {len(included)} figures of {m and m.group(1)}")
 
 
 def main():
@@ -101,6 +126,7 @@ def main():
         text = (out / "mutants.html").read_text() if (out / "mutants.html").is_file() else ""
         expect(f"<b>{killed} of {len(km['mutants'])}</b> killed" in text, "mutants page does not count the kills")
 
+    bundle_checks(results, work, sweeps)
     if "--dirty" in args:  # results recorded as produced from a dirty tree are not bundled
         dirty = work / "dirty"
         shutil.copytree(results, dirty)

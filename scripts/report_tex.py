@@ -10,7 +10,7 @@ import shutil
 import unicodedata
 from pathlib import Path
 
-from report_data import f2, file_of, fmt, is_dirty, num, provenances, row_reason, slug, sweep_wide_failures
+from report_data import f2, file_of, fmt, is_dirty, num, provenances, row_reason, slug, sweep_wide_failures, threads_text
 
 FAIL = r"\textbf{FAIL}"
 TABLE_ROWS = 48  # rows per tabular: a float taller than a page cannot be placed (footnotesize, a4/letter)
@@ -138,6 +138,16 @@ def chosen(made):
     return picked[:4]
 
 
+def threads_tex(provs):
+    """The OpenMP threads the points ran on, each point's own count (its result.json)."""
+    t = sorted({q["threads"] for q in provs if num(q.get("threads"))})
+    if not t:
+        return "an unrecorded number of OpenMP threads"
+    if len(t) == 1:
+        return f"{t[0]} OpenMP thread{'s' if t[0] != 1 else ''} per point"
+    return f"{t[0]} to {t[-1]} OpenMP threads per point (each point's count in its result.json)"
+
+
 def provenance_text(sweeps, tier):
     provs = provenances(sweeps)
     p = provs[0] if provs else {}
@@ -146,7 +156,7 @@ def provenance_text(sweeps, tier):
             + (" (mixed commits)" if len(commits) > 1 else "")
             + (r" \textbf{from a tree with uncommitted changes}" if any(is_dirty(q) for q in provs) else "")
             + f", {tex(p.get('compiler', ''))} ({tex(p.get('build_type', ''))}, flags {tex(str(p.get('cxx_flags', '')).strip())}), "
-            f"on {tex(p.get('cpu', ''))} with {p.get('threads', '?')} OpenMP threads, instruction-set path "
+            f"on {tex(p.get('cpu', ''))} with {threads_tex(provs)}, instruction-set path "
             f"{tex(str(p.get('isa_path', 'portable')))} (pair loops and tree walk), tier {tex(tier)}; "
             r"\texttt{reproduce.sh} re-runs it. ")
 
@@ -254,7 +264,8 @@ def supplement(sweeps, made, figs):
                     row = next(r for r in s["rows"] if r["error"] == name)
                     cap = convergence_caption(case, s, row)
                 elif kind == "wall":
-                    cap = f"{tex(case)}: {tex(name)} against the wall time of each run, one line per variant."
+                    cap = (f"{tex(case)}: {tex(name)} against the wall time of each run, one line per variant; "
+                           f"runs on {threads_text([r for v in ss for r in v['runs']])}.")
                 else:
                     cap = f"{tex(case)} ({tex(s['variant'])}), finest run $n = {s['levels'][-1]}$: {tex(name.replace('_', ' '))}."
                 caps.append((f"{side.capitalize()}: " if side else "") + cap)
@@ -275,17 +286,39 @@ def write_bundle(bundle, sweeps, tier, made, report_dir):
     for name, part in (("example.tex", "verification"), ("example-supplement.tex", "verification-supplement")):
         (bundle / name).write_text("\\documentclass{article}\n\\usepackage{graphicx}\n\\usepackage[margin=2.5cm]{geometry}\n"
                                    f"\\begin{{document}}\n\\input{{{part}}}\n\\end{{document}}\n")
+    (bundle / "provenance.json").write_text(json.dumps(bundle_provenance(sweeps, tier), indent=1) + "\n")
+    commits = sorted({str(p.get("git_commit")) for p in provenances(sweeps)})
+    (bundle / "reproduce.sh").write_text(reproduce_script(commits, tier))
+    print(f"bundle: {bundle / 'verification.tex'} and verification-supplement.tex, {len(list(figs.glob('*.pdf')))} figures")
+
+
+def bundle_provenance(sweeps, tier):
+    """What the bundle's numbers were produced with. Build and host come from the first point (the
+    report flags mixed ones); threads, dates and wall time are every point's own, as its
+    result.json recorded them when it ran."""
     provs = provenances(sweeps)
-    prov = dict(provs[0]) if provs else {}
+    prov = {k: v for k, v in (provs[0] if provs else {}).items() if k not in ("threads", "date")}
     prov["git_commits"] = sorted({str(p.get("git_commit")) for p in provs})
     prov["dirty_runs"] = sum(is_dirty(p) for p in provs)
     prov["tier"] = tier
     prov["uname"] = " ".join(os.uname())
-    (bundle / "provenance.json").write_text(json.dumps(prov, indent=1) + "\n")
-    commit = prov.get("git_commit")
-    (bundle / "reproduce.sh").write_text(
-        "#!/usr/bin/env bash\n# Re-runs every number behind this bundle and rewrites it, from the repository root at "
-        f"commit {commit}.\nset -e\n[ \"$(git rev-parse HEAD)\" = \"{commit}\" ] || "
-        f"{{ echo \"reproduce.sh: check out commit {commit} first\" >&2; exit 2; }}\n"
-        f"bash scripts/bundle.sh --tier {tier.split(',')[0]} --out bundle\n")
-    print(f"bundle: {bundle / 'verification.tex'} and verification-supplement.tex, {len(list(figs.glob('*.pdf')))} figures")
+    prov["points"] = len(provs)
+    prov["threads_per_point"] = sorted({p["threads"] for p in provs if num(p.get("threads"))})
+    dates = sorted(str(p["date"]) for p in provs if "date" in p)
+    prov["points_ran"] = [dates[0], dates[-1]] if dates else []
+    prov["points_wall_time_s"] = sum(r["wall_time_s"] for ss in sweeps.values() for s in ss for r in s["runs"] if num(r.get("wall_time_s")))
+    return prov
+
+
+def reproduce_script(commits, tier):
+    """reproduce.sh: re-runs the bundle from a checkout of the one commit its results came from
+    (git_commit is the full hash; an abbreviated one from older results resolves as well)."""
+    if len(commits) != 1 or commits[0] in ("unknown", "None"):
+        return ("#!/usr/bin/env bash\n# The results behind this bundle do not name one commit: nothing to check out.\n"
+                f"echo 'reproduce.sh: error: the results come from commits {', '.join(commits)}, not one; rerun them at one commit' >&2\nexit 2\n")
+    c = commits[0]
+    return ("#!/usr/bin/env bash\n# Re-runs every number behind this bundle and rewrites it, in a checkout of the repository at "
+            f"commit {c}.\nset -e\ncd \"$(git rev-parse --show-toplevel)\"\n"
+            f"[ \"$(git rev-parse HEAD)\" = \"$(git rev-parse --verify -q '{c}^{{commit}}')\" ] || "
+            f"{{ echo \"reproduce.sh: error: HEAD is $(git rev-parse HEAD); check out commit {c} first\" >&2; exit 2; }}\n"
+            f"bash scripts/bundle.sh --tier {tier.split(',')[0]} --out bundle\n")
