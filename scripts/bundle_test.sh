@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Tests of scripts/bundle.sh (ctest bundle_*).
 #   bundle_test.sh compiles RESULTS WORK   bundles RESULTS, compiles both .tex files with pdflatex
-#                                         and checks the section is at most 4 pages; exit 77 (ctest:
+#                                         (one case lengthened past a page: its tables must break across
+#                                         pages), checks no float is too large, no line overfull and the
+#                                         section at most 4 pages; exit 77 (ctest:
 #                                         skipped) with a message when pdflatex is absent
 #   bundle_test.sh dirty RESULTS WORK      a copy of the scripts in a scratch git repository: a tracked
 #                                         change or an untracked file under verification/ is refused
@@ -17,7 +19,23 @@ rm -rf "$work" && mkdir -p "$work"
 fail() { echo "FAIL: $*"; exit 1; }
 
 if [ "$mode" = compiles ]; then
-  command -v pdflatex >/dev/null || { echo "SKIP: pdflatex not found (Debian texlive-latex-base); the bundle is not compiled"; exit 77; }
+  command -v pdflatex >/dev/null || { echo "SKIP: pdflatex not found (bash scripts/install-deps.sh --tex installs it); the bundle is not compiled"; exit 77; }
+  # A case with more rows and checks, each with a long reason, than a page holds: its tables must
+  # break across pages, not become floats too large to place (whose rows LaTeX drops).
+  cp -r "$results" "$work/results" && results=$work/results
+  py=$(bash "$root/scripts/find-python.sh") || exit 1
+  "$py" - "$results/kernel/sweep.json" <<'EOF_PY' || fail "lengthening the kernel sweep"
+import json, sys
+f = sys.argv[1]
+s = json.load(open(f))
+why = "a reason long enough to wrap over several lines of the table's narrow reason column, " * 3
+for k in range(90):
+    s["rows"].append({"error": f"long_error_{k}", "fine_value": 1e-3, "observed": None, "se": None, "expected": None,
+                      "band": 0, "outcome": "fail", "why": f"failed: bound_long_error_{k}: {why}"})
+    s["checks"].append({"name": f"bound_long_error_{k}", "value": 1e-3, "lo": 0, "hi": 1e-4, "why": why, "pass": False,
+                        "kind": "verification", "error": f"long_error_{k}"})
+json.dump(s, open(f, "w"))
+EOF_PY
   bash "$root/scripts/bundle.sh" --results "$results" --out "$work/bundle" --allow-dirty >"$work/out.txt" 2>&1 ||
     { cat "$work/out.txt"; fail "bundle.sh exit $?"; }
   cat "$work/out.txt"
@@ -26,6 +44,10 @@ if [ "$mode" = compiles ]; then
   done
   ! grep -q "^!" "$work/bundle/example.log" "$work/bundle/example-supplement.log" || fail "LaTeX errors in the logs"
   ! grep -q "undefined references" "$work/bundle/example.log" || fail "undefined references in example.log"
+  for log in "$work/bundle/example.log" "$work/bundle/example-supplement.log"; do
+    ! grep -q "Float too large" "$log" || fail "$(grep -m1 "Float too large" "$log") ($log)"
+    ! grep -qF 'Overfull \hbox' "$log" || fail "$(grep -m1 -F 'Overfull \hbox' "$log") ($log)"
+  done
   pages=$(grep -o '([0-9]* pages\?' "$work/bundle/example.log" | tr -dc 0-9)
   [ -n "$pages" ] && [ "$pages" -le 4 ] || fail "verification.tex compiles to ${pages:-?} pages (at most 4)"
   for pdf in $(grep -o 'figures/[^}]*' "$work/bundle/verification.tex" "$work/bundle/verification-supplement.tex" | cut -d: -f2); do

@@ -10,10 +10,10 @@ import shutil
 import unicodedata
 from pathlib import Path
 
-from report_data import f2, file_of, fmt, is_dirty, num, provenances, row_reason, slug, sweep_wide_failures, threads_text
+from report_data import (OUTCOMES, claim_notes, f2, file_of, fmt, is_dirty, num, provenances, row_note, slug,
+                         sweep_wide_failures, threads_text)
 
 FAIL = r"\textbf{FAIL}"
-TABLE_ROWS = 48  # rows per tabular: a float taller than a page cannot be placed (footnotesize, a4/letter)
 FLOATS_PER_FLUSH = 8  # \clearpage after this many figure floats: LaTeX holds at most 18 unplaced floats
 MATH = {"±": r"\pm", "×": r"\times", "≤": r"\le", "≥": r"\ge", "−": "-", "≈": r"\approx", "∞": r"\infty",
         "²": "^2", "³": "^3", "·": r"\cdot", "∫": r"\int", "∑": r"\sum", "√": r"\surd", "∇": r"\nabla", "∂": r"\partial"}
@@ -24,7 +24,9 @@ def tex(text):
     else outside ASCII spelled as its Unicode name (pdflatex would stop on it)."""
     out = []
     for ch in str(text):
-        if ch in "\\{}_%&#$^~<>|":
+        if ch == "_":  # identifiers (drift_baseline_present) may break after an underscore
+            out.append(r"\_\allowbreak{}")
+        elif ch in "\\{}%&#$^~<>|":
             out.append({"\\": r"\textbackslash{}", "^": r"\^{}", "~": r"\~{}", "<": r"$<$", ">": r"$>$",
                         "|": r"$|$"}.get(ch, "\\" + ch))
         elif ord(ch) < 128:
@@ -67,8 +69,13 @@ def expected_tex(row):
     return f"${row['expected']:.3g} \\pm {row.get('band', 0):.3g}$" if num(row.get("expected")) else "none"
 
 
+# Each outcome in its own colour, as in the HTML report (xcolor).
+OUTCOME_TEX = {"verified": r"\textcolor[rgb]{0,0.4,0}{verified}", "known failure": r"\textcolor[rgb]{0.5,0.15,0.6}{known failure}",
+               "no order claimed": r"\textcolor[rgb]{0.52,0.36,0}{no claim}", "fail": r"\textcolor[rgb]{0.7,0,0}{\textbf{fail}}"}
+
+
 def outcome_tex(row):
-    return {"verified": "verified", "no order claimed": "no claim", "fail": r"\textbf{fail}"}.get(row["outcome"], tex(row["outcome"]))
+    return OUTCOME_TEX.get(row["outcome"], tex(row["outcome"]))
 
 
 def sci(v):
@@ -81,19 +88,15 @@ def sci(v):
     return f"${m}\\times10^{{{int(x)}}}$" if int(x) not in (-1, 0, 1) else f"{v:.3g}"
 
 
-def tables(head, spec, lines, caption, label):
-    """Long tables as consecutive floats of TABLE_ROWS rows (plain LaTeX: no longtable needed)."""
-    out, chunks = [], [[]]
-    for block in lines:  # a block (a list of rows: one case) is never split across two floats
-        block = block if isinstance(block, list) else [block]
-        if chunks[-1] and len(chunks[-1]) + len(block) > TABLE_ROWS:
-            chunks.append([])
-        chunks[-1] += block
-    for k, chunk in enumerate(chunks):
-        cont = f" (continued, part {k + 1} of {len(chunks)})" if k else ""
-        out += [r"\begin{table}[htbp]\centering\footnotesize\setlength{\tabcolsep}{3pt}", f"\\caption{{{caption}{cont}}}" + (f"\\label{{{label}}}" if not k else ""),
-                f"\\begin{{tabular}}{{{spec}}}\\hline", head + r" \\ \hline", *chunk, r"\hline\end{tabular}", r"\end{table}"]
-    return out
+def long_table(head, spec, rows, caption, label):
+    """A table that breaks across pages (longtable: a float taller than a page cannot be placed and
+    loses its rows), ruled with booktabs, its head repeated on every page it continues on."""
+    cols = len(head.split("&"))
+    return [r"{\footnotesize\setlength{\tabcolsep}{3pt}", f"\\begin{{longtable}}{{{spec}}}",
+            f"\\caption{{{caption}}}\\label{{{label}}}\\\\", r"\toprule", head + r" \\ \midrule", r"\endfirsthead",
+            f"\\caption[]{{{caption} (continued)}}\\\\", r"\toprule", head + r" \\ \midrule", r"\endhead",
+            r"\midrule \multicolumn{%d}{r}{\emph{continued on the next page}} \\" % cols, r"\endfoot",
+            r"\bottomrule", r"\endlastfoot", *rows, r"\end{longtable}}"]
 
 
 def copy_figure(case, stem, figs):
@@ -162,15 +165,16 @@ def provenance_text(sweeps, tier):
 
 
 def main_section(sweeps, tier, made, figs):
-    rows, n_rows = [], {"verified": 0, "no order claimed": 0, "fail": 0}
+    rows, n_rows = [], {k: 0 for k in OUTCOMES}
     for case, ss in sorted(sweeps.items()):
         for s in ss:
             for r in s["rows"]:
                 n_rows[r["outcome"]] = n_rows.get(r["outcome"], 0) + 1
         s = ss[0]
         shown = [r for r in s["rows"] if num(r.get("expected")) or r["outcome"] == "fail"]
-        rows.append([])
-        block = rows[-1]
+        if rows:
+            rows[-1] += r" \midrule"
+        block = rows
         block.append(wide_row(r"\textbf{" + tex(case) + "}: " + tex(s.get("summary", ""))))
         for r in shown:
             block.append(f"\\quad {tex(r['error'])} & {sci(r.get('fine_value'))} ($n={s['levels'][-1]}$) & {order_tex(r)} & "
@@ -183,12 +187,11 @@ def main_section(sweeps, tier, made, figs):
         if len(ss) > 1:
             more = [r["outcome"] for v in ss[1:] for r in v["rows"]]
             notes.append(f"{len(ss) - 1} further variant{'s' if len(ss) > 2 else ''}: {more.count('verified')} verified, "
+                         f"{more.count('known failure')} known failure{'s' if more.count('known failure') != 1 else ''}, "
                          f"{more.count('no order claimed')} no claim, {more.count('fail')} fail")
         if notes:
             block.append(wide_row(r"\quad\emph{" + "; ".join(notes) + " (supplement)}"))
-        if case != sorted(sweeps)[-1]:
-            block[-1] += r" \hline"
-    t = [r"% Generated by scripts/report.py --bundle (scripts/bundle.sh): \input{verification} in a paper (needs graphicx).",
+    t = [r"% Generated by scripts/report.py --bundle (scripts/bundle.sh): \input{verification} in a paper (needs graphicx, booktabs, longtable, xcolor).",
          r"\section{Verification}\label{sec:verification}",
          provenance_text(sweeps, tier) +
          r"Each case compares the SPH result with a reference independent of the code (quadrature, analytic solution, exact "
@@ -196,13 +199,15 @@ def main_section(sweeps, tier, made, figs):
          r"$p$ is minus the least-squares slope of $\log$ error against $\log n$, with the standard error of that fit. "
          r"An error is \emph{verified} when $p$ lies within the expected order $\pm$ (band $+\,2$ standard errors) "
          r"and the error is under its bound; \emph{no claim} means the case states why no order is expected (a round-off "
-         r"quantity, a floor at fixed $h/\Delta x$, a pre-asymptotic range) and its bounds hold; \emph{fail} means a check on "
+         r"quantity, a floor at fixed $h/\Delta x$, a pre-asymptotic range) and its bounds hold; \emph{known failure} means the case states why the "
+         r"error misses its order and names the variant or setting that does converge; \emph{fail} means a check on "
          f"that error failed. Over all {sum(len(ss) for ss in sweeps.values())} case variants: {n_rows['verified']} errors "
-         f"verified, {n_rows['no order claimed']} with no order claimed, {n_rows['fail']} failing. Table~\\ref{{tab:verification}} "
+         f"verified, {n_rows['known failure']} known failure{'s' if n_rows['known failure'] != 1 else ''}, "
+         f"{n_rows['no order claimed']} with no order claimed, {n_rows['fail']} failing. Table~\\ref{{tab:verification}} "
          r"lists the default variant of each case; the supplement (\texttt{verification-supplement.tex}) holds every variant, "
          r"every check (against the reference or, labelled \emph{drift}, against the code's own earlier output) and every figure.", ""]
-    t += tables(r"case: compared against; error & at finest $n$ & observed order & expected & outcome",
-                "l l l l l", rows, "Verification summary: each case (in bold, with what it is compared against) and the "
+    t += long_table(r"case: compared against; error & at finest $n$ & observed order & expected & outcome",
+                    "l l l l l", rows, "Verification summary: each case (in bold, with what it is compared against) and the "
                 "errors of its default variant that carry an order claim or fail.", "tab:verification")
     picked = chosen(made)
     for k in range(0, len(picked), 2):  # two per float: readable at half the text width
@@ -214,7 +219,7 @@ def main_section(sweeps, tier, made, figs):
 
 
 def supplement(sweeps, made, figs):
-    t = [r"% Generated by scripts/report.py --bundle: \input{verification-supplement} (needs graphicx).",
+    t = [r"% Generated by scripts/report.py --bundle: \input{verification-supplement} (needs graphicx, booktabs, longtable, xcolor).",
          r"\section{Verification supplement}\label{sec:verification-supplement}",
          r"Every case variant behind the verification section: each error's outcome, every check (\emph{verification}: "
          r"against an independent reference; \emph{drift}: against the code's own earlier output, which shows only that "
@@ -225,14 +230,17 @@ def supplement(sweeps, made, figs):
         defs = {k: v for s in ss for k, v in s.get("error_defs", {}).items()}
         if defs:
             t += [r"\begin{itemize}\small"] + [f"\\item {tex(k)}: {tex(v)}" for k, v in defs.items()] + [r"\end{itemize}"]
+        notes = claim_notes(ss)
+        if notes:  # each claim's reason once; the table's rows give only their own
+            t += [r"Claims:", r"\begin{itemize}\small"] + [f"\\item {tex(k)}, {tex(what)}: {tex(why)}" for k, what, why in notes] + [r"\end{itemize}"]
         rows = []
         for s in ss:
             for k, r in enumerate(s["rows"]):
                 rows.append(f"{tex(s['variant']) if k == 0 else ''} & {tex(r['error'])} & {sci(r.get('fine_value'))} ($n={s['levels'][-1]}$) & "
-                            f"{order_tex(r)} & {expected_tex(r)} & {outcome_tex(r)} & {ragged(tex(row_reason(s, r)))} \\tabularnewline")
+                            f"{order_tex(r)} & {expected_tex(r)} & {outcome_tex(r)} & {ragged(tex(row_note(s, r)))} \\tabularnewline")
         if rows:
-            t += tables("variant & error & at finest $n$ & observed & expected & outcome & why", r"l l l l l l p{3.8cm}", rows,
-                        f"{tex(case)}: every variant.", f"tab:supp-{slug(case)}")
+            t += long_table("variant & error & at finest $n$ & observed & expected & outcome & own reason", r"l l l l l l p{3.4cm}",
+                            rows, f"{tex(case)}: every variant (the claims' reasons are listed above).", f"tab:supp-{slug(case)}")
         checks = []
         for s in ss:
             for c in s["checks"]:
@@ -241,8 +249,8 @@ def supplement(sweeps, made, figs):
                                   f"[{fmt(c.get('lo'), '.4g', '--')}, {fmt(c.get('hi'), '.4g', '--')}] & "
                                   f"{'pass' if c['pass'] else FAIL} \\\\")
         if checks:
-            t += tables("variant & verification check & value & allowed & ", "l l l l l", checks, f"{tex(case)}: verification checks.",
-                        f"tab:supp-checks-{slug(case)}")
+            t += long_table("variant & verification check & value & allowed & ", "l l l l l", checks, f"{tex(case)}: verification checks.",
+                            f"tab:supp-checks-{slug(case)}")
         drift = [(s, c) for s in ss for c in s["checks"] if c.get("kind") == "drift"]
         bad = [f"{s['variant']}: {c['name']}" for s, c in drift if not c["pass"]]
         wide = [f"{s['variant']}: {n}" for s in ss for n in sweep_wide_failures(s)]
@@ -284,7 +292,7 @@ def write_bundle(bundle, sweeps, tier, made, report_dir):
     (bundle / "verification.tex").write_text(main_section(sweeps, tier, made, figs))
     (bundle / "verification-supplement.tex").write_text(supplement(sweeps, made, figs))
     for name, part in (("example.tex", "verification"), ("example-supplement.tex", "verification-supplement")):
-        (bundle / name).write_text("\\documentclass{article}\n\\usepackage{graphicx}\n\\usepackage[margin=2.5cm]{geometry}\n"
+        (bundle / name).write_text("\\documentclass{article}\n\\usepackage{graphicx,booktabs,longtable,xcolor}\n\\usepackage[margin=2.5cm]{geometry}\n"
                                    f"\\begin{{document}}\n\\input{{{part}}}\n\\end{{document}}\n")
     (bundle / "provenance.json").write_text(json.dumps(bundle_provenance(sweeps, tier), indent=1) + "\n")
     commits = sorted({str(p.get("git_commit")) for p in provenances(sweeps)})
