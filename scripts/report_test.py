@@ -9,6 +9,7 @@ also checks that a bundle of results whose provenance records a dirty tree is re
 (--allow-dirty is exercised by bundle_test.sh).
 
 usage: report_test.py RESULTS_DIR WORK_DIR [--mutants FILE] [--dirty]"""
+import html
 import json
 import re
 import shutil
@@ -33,6 +34,29 @@ def expect(cond, what):
 def report(results, reports, *extra):
     return subprocess.run([sys.executable, str(HERE / "report.py"), str(results), "--name", "t", "--reports", str(reports), *extra],
                           capture_output=True, text=True)
+
+
+def first_screen(index, sweeps):
+    """The index opens with the verdict, then (when anything fails) the failing rows with links to
+    their variants, then one line per case linking its page, and only then the full table."""
+    failing = [(s, r) for s in sweeps for r in s["rows"] if r["outcome"] == "fail"]
+    n = len(sweeps)
+    bad = sum(not s["passed"] for s in sweeps)
+    verdict = re.search(r"<p class='verdict (pass|fail)'>(PASS|FAIL): ([^<]*)", index)
+    expect(verdict and (verdict.group(2) == "FAIL") == (bad > 0), f"verdict line {verdict and verdict.group(0)} for {bad} failing variants")
+    at = {k: index.find(f"id='{k}'") for k in ("failing", "cases", "all")}
+    expect(0 < at["cases"] < at["all"], f"the per-case lines do not precede the full table: {at}")
+    if failing:
+        expect(0 < at["failing"] < at["cases"], f"the failing rows do not come first: {at}")
+        section = index[at["failing"]:at["cases"]]
+        for s, r in failing:
+            href = f"case-{slug(s['case'])}.html#v-{slug(s['variant'])}"
+            expect(re.search(rf"<a href='{re.escape(href)}'>[^<]*</a></td><td class='nw'>{re.escape(r['error'])}</td>", section),
+                   f"failing row {s['case']} {s['variant']} {r['error']} not listed first with a link to {href}")
+        expect("href='#failing'" in index[:at["failing"]], "the verdict line does not link the failing rows")
+    cases = index[at["cases"]:at["all"]]
+    for case in {s["case"] for s in sweeps}:
+        expect(f"<a href='case-{slug(case)}.html'>{case}</a>" in cases, f"no line for case {case} linking its page")
 
 
 def distinct_figures(out, stdout):
@@ -97,13 +121,24 @@ def main():
     sweeps = [json.loads(f.read_text()) for f in sorted(results.glob("**/sweep.json"))]
     outcomes = [r["outcome"] for s in sweeps for r in s["rows"]]
     index = (out / "index.html").read_text()
-    for name in ("verified", "no order claimed", "fail"):
-        expect(f"{outcomes.count(name)} {name}</span>" in index, f"index does not count {outcomes.count(name)} {name}")
+    for name in ("verified", "known failure", "no order claimed", "fail"):
+        n = outcomes.count(name)
+        label = f"{n} {name}{'s' if name == 'known failure' and n != 1 else ''}"
+        expect(re.search(rf">{label}</(span|a)>", index), f"index does not count {label}")
+    expect("known failure" in outcomes, "the fixture has no known failure row: the test of its rendering cannot fail")
+    expect(re.search(r"<td class='known'>known failure</td>", index), "a known failure row is not shown in its own colour")
+    first_screen(index, sweeps)
     for s in sweeps:
         page = out / f"case-{slug(s['case'])}.html"
         expect(page.is_file() and f"case-{slug(s['case'])}.html" in index, f"no linked page for {s['case']}")
         text = page.read_text() if page.is_file() else ""
         expect("<p class='claim'>" in text, f"{page.name} does not open with the claim")
+        if "<figure>" in text:
+            expect(text.index("<figure>") < text.index("<table>"), f"{page.name}: tables before the figures")
+        for c in s.get("claims", {}).values():  # each claim's reason once, not once per row
+            if c.get("why"):
+                expect(text.count(html.escape(c["why"], quote=True)) == 1,
+                       f"{page.name}: the claim's reason appears {text.count(html.escape(c['why'], quote=True))} times: {c['why']}")
         for c in s["checks"]:
             expect(re.search(rf"<td>{re.escape(c['name'])}</td><td>[^<]*</td><td[^>]*>{c.get('kind', 'verification')}</td>", text),
                    f"{page.name}: check {c['name']} not listed with its kind")
