@@ -134,7 +134,7 @@ def order_overview(rows, stem):
     if not rows:
         return None
     fig, ax = plt.subplots(figsize=(5.6, max(2.5, 0.16 * len(rows) + 1)))
-    colour = {"verified": "C2", "fail": "C3"}
+    colour = {"verified": "C2", "known failure": "#80269a", "fail": "C3"}  # the report's colours
     for k, r in enumerate(rows):
         row = r["row"]
         err = 2 * row["se"] if num(row.get("se")) else 0

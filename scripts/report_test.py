@@ -20,6 +20,7 @@ from urllib.parse import unquote
 
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
+import report_tex  # noqa: E402
 from report_check_links import broken_links  # noqa: E402
 from report_data import file_of, num, series, slug  # noqa: E402
 
@@ -98,6 +99,9 @@ def bundle_checks(results, work, sweeps):
     included = re.findall(r"\\includegraphics\[[^]]*\]\{figures/([^}]*)\}", supp)
     shared = sorted({f for f in included if included.count(f) > 1})
     expect(included and not shared, f"supplement figures sharing a file: {shared}")
+    known = sum(r["outcome"] == "known failure" for s in sweeps for r in s["rows"])
+    coloured = sum(report_tex.OUTCOME_TEX["known failure"] in line for line in supp.splitlines() if "&" in line)
+    expect(coloured == known, f"the supplement's tables colour {coloured} known failures of {known}")
     m = re.search(r"; (\d+) figures\)", res.stdout)
     expect(m and int(m.group(1)) == len(included), f"supplement includes {len(included)} figures of {m and m.group(1)}")
 
