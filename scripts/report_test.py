@@ -95,6 +95,8 @@ def bundle_checks(results, work, sweeps):
     main_tex = (work / "bundle" / "verification.tex").read_text()
     said = f"{threads[0]} to {threads[-1]} OpenMP threads per point" if len(threads) > 1 else f"{threads[0]} OpenMP thread"
     expect(said in main_tex, f"verification.tex does not say '{said}'")
+    for case in sorted({s["case"] for s in sweeps} & set(report_tex.HYDRO)):  # the hydrodynamics in the main part
+        expect(f"{{figures/{slug(case)}_" in main_tex, f"verification.tex shows no {case} figure")
     supp = (work / "bundle" / "verification-supplement.tex").read_text()
     included = re.findall(r"\\includegraphics\[[^]]*\]\{figures/([^}]*)\}", supp)
     shared = sorted({f for f in included if included.count(f) > 1})

@@ -123,12 +123,38 @@ def convergence_caption(case, s, row):
             f"{expected_tex(row)} (dashed, through the finest point; band shaded); {outcome_tex(row)}.")
 
 
-def chosen(made):
+HYDRO = ("sod", "sedov", "noh")  # the cases that verify the hydrodynamics: the section shows them first
+
+
+def run_caption(case, s, name):
+    title = next((f["title"] for f in s["runs"][-1].get("figures", []) if f["name"] == name), name.replace("_", " "))
+    return f"{tex(case)} ({tex(s['variant'])}), finest run $n = {s['levels'][-1]}$: {tex(title)}."
+
+
+def hydro_figures(sweeps, made):
+    """Per hydrodynamics case present, its default variant's density profile at the finest level
+    (else its first profile) beside its first convergence figure with an order claim."""
+    pairs = []
+    for case in HYDRO:
+        if case not in sweeps:
+            continue
+        s = sweeps[case][0]
+        mine = [m for m in made if m[0] == case and m[1] is not None and m[1]["variant"] == s["variant"]]
+        runs = [m for m in mine if m[3] == "run"]
+        prof = next((m for m in runs if m[2] == "profile_rho"), next((m for m in runs if m[2].startswith("profile")), None))
+        conv = next((m for m in mine if m[3] == "convergence"), None)
+        pair = [m for m in (prof, conv) if m]
+        if pair:
+            pairs.append(pair)
+    return pairs
+
+
+def chosen(made, skip=()):
     """The convergence figures for the section: verified errors (expected order at least 1/2) of
-    distinct cases with the widest range of n (then the most levels), at most four."""
+    distinct cases (not in skip) with the widest range of n (then the most levels), at most four."""
     cands = []
     for case, s, err, kind, stem in made:
-        if kind != "convergence":
+        if kind != "convergence" or case in skip:
             continue
         row = next(r for r in s["rows"] if r["error"] == err)
         if row["outcome"] == "verified" and len(s["levels"]) >= 3 and row["expected"] >= 0.5:  # a real convergence
@@ -209,12 +235,17 @@ def main_section(sweeps, tier, made, figs):
     t += long_table(r"case: compared against; error & at finest $n$ & observed order & expected & outcome",
                     "l l l l l", rows, "Verification summary: each case (in bold, with what it is compared against) and the "
                 "errors of its default variant that carry an order claim or fail.", "tab:verification")
-    picked = chosen(made)
-    for k in range(0, len(picked), 2):  # two per float: readable at half the text width
-        pair = picked[k:k + 2]
-        names = [copy_figure(case, stem, figs) for case, s, row, stem in pair]
-        caps = " ".join(f"({'ab'[j]}) {convergence_caption(case, s, row)}" for j, (case, s, row, _) in enumerate(pair))
-        t += figure(names, "Convergence" + (", left to right: " if len(pair) > 1 else ": ") + caps, 0.49 if len(pair) > 1 else 0.6)
+    for pair in hydro_figures(sweeps, made):  # two per float: readable at half the text width
+        names = [copy_figure(case, stem, figs) for case, _, _, _, stem in pair]
+        caps = [f"({'ab'[j]}) " + (run_caption(case, s, name) if kind == "run" else
+                                  convergence_caption(case, s, next(r for r in s["rows"] if r["error"] == name)))
+                for j, (case, s, name, kind, _) in enumerate(pair)]
+        t += figure(names, ("Left to right: " if len(pair) > 1 else "") + " ".join(caps), 0.49 if len(pair) > 1 else 0.6)
+    picked = chosen(made, HYDRO)[:2]  # the other cases' widest convergence, in one float: the section stays within 4 pages
+    if picked:
+        names = [copy_figure(case, stem, figs) for case, s, row, stem in picked]
+        caps = " ".join(f"({'ab'[j]}) {convergence_caption(case, s, row)}" for j, (case, s, row, _) in enumerate(picked))
+        t += figure(names, "Convergence" + (", left to right: " if len(picked) > 1 else ": ") + caps, 0.49 if len(picked) > 1 else 0.6)
     return "\n".join(t) + "\n"
 
 
@@ -275,7 +306,7 @@ def supplement(sweeps, made, figs):
                     cap = (f"{tex(case)}: {tex(name)} against the wall time of each run, one line per variant; "
                            f"runs on {threads_text([r for v in ss for r in v['runs']])}.")
                 else:
-                    cap = f"{tex(case)} ({tex(s['variant'])}), finest run $n = {s['levels'][-1]}$: {tex(name.replace('_', ' '))}."
+                    cap = run_caption(case, s, name)
                 caps.append((f"{side.capitalize()}: " if side else "") + cap)
             t += figure(names, " ".join(caps), 0.49 if len(pair) == 2 else 0.6)
             if (k + 1) % FLOATS_PER_FLUSH == 0:
