@@ -252,6 +252,12 @@ def check_rows(s, checks):
         for c in checks)
 
 
+def definition(ss, error):
+    """', the definition' of an error for a caption (its axis shows only the name)."""
+    text = next((s["error_defs"][error] for s in ss if error in s.get("error_defs", {})), "")
+    return f" ({text})" if text else ""
+
+
 def figure_html(out, stem, caption):
     png, pdf = (quote(file_of(stem, x).relative_to(out).as_posix()) for x in ("png", "pdf"))
     return (f"<figure><a href='{e(png)}'><img src='{e(png)}' alt='{e(caption)}'></a>"
@@ -269,7 +275,7 @@ def case_page(case, ss, results, out, made):
         stem = figs.wall_time(case, ss, err, figdir / f"wall_{slug(err)}")
         if stem:
             made.append((case, None, err, "wall", stem))
-            walls.append(figure_html(out, stem, f"{err} against the wall time of each run, every variant; "
+            walls.append(figure_html(out, stem, f"{err}{definition(ss, err)} against the wall time of each run, every variant; "
                                                   f"runs on {threads_text(r for s in ss for r in s['runs'])}"))
     if walls:
         body.append("<h3>Error against run time</h3><div class='figs'>" + "".join(walls) + "</div>")
@@ -280,7 +286,8 @@ def case_page(case, ss, results, out, made):
             stem = figs.convergence(case, s, row, figdir / f"{v}_{slug(row['error'])}_convergence") if num(row.get("expected")) else None
             if stem:
                 made.append((case, s, row["error"], "convergence", stem))
-                body.append(figure_html(out, stem, f"{row['error']} against n, {s['variant']}: {row['outcome']}"))
+                body.append(figure_html(out, stem, f"{row['error']}{definition([s], row['error'])} against n "
+                                                   f"({s.get('n_counts', 'resolution')}), {s['variant']}: {row['outcome']}"))
         if s["runs"]:
             for f in s["runs"][-1].get("figures", []):
                 stem = figs.run_figure(f, f" [{s['variant']}, n = {s['levels'][-1]}]", figdir / f"{v}_run_{slug(f['name'])}")

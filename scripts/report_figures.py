@@ -17,19 +17,14 @@ def save(fig, stem):
     # Fixed margins with room for labels of up to three lines (wrap()): "tight" bounding boxes or
     # constrained layout cost a further draw of every figure, nearly doubling the report's time.
     fig.subplots_adjust(left=0.16, right=0.97, bottom=0.15, top=0.89)
+    for ax in fig.axes:  # a log axis over less than two decades labels some minor ticks too (one major tick says little)
+        for axis in (ax.xaxis, ax.yaxis):
+            if axis.get_scale() == "log" and isinstance(axis.get_minor_formatter(), matplotlib.ticker.LogFormatter):
+                axis.set_minor_formatter(matplotlib.ticker.LogFormatterSciNotation(labelOnlyBase=False, minor_thresholds=(2, 0.5)))
     for ext in ("png", "pdf"):
         fig.savefig(file_of(stem, ext), dpi=110)
     plt.close(fig)
     return stem
-
-
-def n_label(s):
-    return wrap(f"n: {s.get('n_counts') or 'resolution'}", 70)
-
-
-def error_label(s, error):
-    text = s.get("error_defs", {}).get(error)
-    return wrap(f"{error}: {text}" if text else error, 55)
 
 
 def convergence(case, s, row, stem):
@@ -56,8 +51,8 @@ def convergence(case, s, row, stem):
         ax.fill_between(n, guide(q - band), guide(q + band), color="C3", alpha=0.12, lw=0)
     ax.set_xticks(n, [f"{v:g}" for v in n])  # the levels themselves, not powers of ten
     ax.xaxis.set_minor_formatter(matplotlib.ticker.NullFormatter())
-    ax.set_xlabel(n_label(s))
-    ax.set_ylabel(error_label(s, e))
+    ax.set_xlabel("n")  # what n counts is in the caption
+    ax.set_ylabel(e)  # the error's name; its definition is in the caption (a long one would be clipped)
     ax.set_title(f"{case} [{s['variant']}]: {e} against n ({row['outcome']})")
     ax.legend()
     ax.grid(True, which="both", alpha=0.3)
@@ -86,7 +81,7 @@ def wall_time(case, ss, error, stem):
         plt.close(fig)
         return None
     ax.set_xlabel("wall time of the run [s]")
-    ax.set_ylabel(error_label(ss[0], error))
+    ax.set_ylabel(error)
     ax.set_title(f"{case}: {error} against run time, one line per variant")
     ax.legend()
     ax.grid(True, which="both", alpha=0.3)

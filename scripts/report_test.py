@@ -157,6 +157,9 @@ def main():
                        f"{s['case']} {s['variant']} {r['error']}: convergence {ext} {'missing' if want else 'drawn without an order claim'}")
             if want:
                 expect((fig / f"wall_{slug(r['error'])}.pdf").is_file(), f"{s['case']} {r['error']}: no run-time figure")
+                d = s.get("error_defs", {}).get(r["error"])  # the axis shows the name, the caption the definition
+                expect(not d or re.search(rf"<figcaption>{re.escape(r['error'])} \({re.escape(html.escape(d, quote=True))}\) against n",
+                                          text), f"{page.name}: the {r['error']} convergence caption does not define it")
     for png in out.glob("fig/**/*.png"):
         expect(png.with_name(png.name[:-4] + ".pdf").is_file(), f"{png.name} has no PDF")
     distinct_figures(out, res.stdout)

@@ -303,7 +303,8 @@ def supplement(sweeps, made, figs):
                     row = next(r for r in s["rows"] if r["error"] == name)
                     cap = convergence_caption(case, s, row)
                 elif kind == "wall":
-                    cap = (f"{tex(case)}: {tex(name)} against the wall time of each run, one line per variant; "
+                    d = next((v["error_defs"][name] for v in ss if name in v.get("error_defs", {})), "")
+                    cap = (f"{tex(case)}: {tex(name)}" + (f", {tex(d)}," if d else "") + " against the wall time of each run, one line per variant; "
                            f"runs on {threads_text([r for v in ss for r in v['runs']])}.")
                 else:
                     cap = run_caption(case, s, name)
