@@ -238,17 +238,18 @@ def claim_sentence(case, ss):
     text += f" Over {len(ss)} variant{'s' if len(ss) > 1 else ''}: " + ", ".join(outcome_count(c, k) for k in OUTCOMES) + "."
     notes = claim_notes(ss)
     claims = ("<ul class='claims'>" + "".join(
-        f"<li><b>{e(err)}</b>, <span class='{'known' if what.startswith('known') else ''}'>{e(what)}</span>: {e(why)}</li>"
-        for err, what, why in notes) + "</ul>") if notes else ""
+        f"<li><span class='{'known' if 'known failure' in claimed else ''}'>{e(claimed)}</span>: {e(why)}</li>"
+        for claimed, why in notes) + "</ul>") if notes else ""
     return f"<p class='claim'>{text}</p>{claims}"
 
 
 def check_rows(s, checks):
+    claimed = {c.get("why") for c in s.get("claims", {}).values()} - {None, ""}
     return "".join(
         f"<tr><td>{e(c['name'])}</td><td>{e(c.get('error') or '(whole sweep)')}</td>"
         f"<td class='{'drift' if c.get('kind') == 'drift' else ''}'>{e(c.get('kind', 'verification'))}</td>"
         f"<td class='num'>{fmt(c.get('value'), '.4g')}</td><td class='num'>[{fmt(c.get('lo'), '.4g')}, {fmt(c.get('hi'), '.4g')}]</td>"
-        f"<td class='{'verified' if c['pass'] else 'fail'}'>{'pass' if c['pass'] else 'FAIL'}</td><td class='why'>{e(c.get('why', ''))}</td></tr>"
+        f"<td class='{'verified' if c['pass'] else 'fail'}'>{'pass' if c['pass'] else 'FAIL'}</td><td class='why'>{e(c.get('why', '')) if c.get('why') not in claimed else '<i>the claim&#39;s reason (above)</i>'}</td></tr>"
         for c in checks)
 
 

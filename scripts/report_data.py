@@ -112,9 +112,10 @@ def known_text(row):
 
 
 def claim_notes(ss):
-    """Each claim's reason once over the variants of a case: distinct (error, what is claimed, why)
-    in the order met, for the claim list a case opens with (its rows then omit it)."""
-    out = []
+    """Each claim's reason once over the variants of a case: (the errors with what is claimed of
+    each, why) in the order met, the errors sharing a reason joined ("sum_1d, sum_2d (order 2 ±
+    0.2); sum_3d (order 4 ± 0.3)"), for the claim list a case opens with (its rows then omit it)."""
+    items = []
     for s in ss:
         for r in s["rows"]:
             c = s.get("claims", {}).get(r["error"], {})
@@ -124,9 +125,12 @@ def claim_notes(ss):
                 item = (r["error"], f"order {c['expected']:g} ± {c.get('band', 0):g}", c.get("why", ""))
             else:
                 item = (r["error"], "no order claimed", r.get("why", "") or c.get("why", ""))
-            if item[2] and item not in out:
-                out.append(item)
-    return out
+            if item[2] and item not in items:
+                items.append(item)
+    joined = {}  # why -> what -> errors
+    for err, what, why in items:
+        joined.setdefault(why, {}).setdefault(what, []).append(err)
+    return [("; ".join(f"{', '.join(errs)} ({what})" for what, errs in whats.items()), why) for why, whats in joined.items()]
 
 
 def row_note(s, row):

@@ -263,7 +263,7 @@ def supplement(sweeps, made, figs):
             t += [r"\begin{itemize}\small"] + [f"\\item {tex(k)}: {tex(v)}" for k, v in defs.items()] + [r"\end{itemize}"]
         notes = claim_notes(ss)
         if notes:  # each claim's reason once; the table's rows give only their own
-            t += [r"Claims:", r"\begin{itemize}\small"] + [f"\\item {tex(k)}, {tex(what)}: {tex(why)}" for k, what, why in notes] + [r"\end{itemize}"]
+            t += [r"Claims:", r"\begin{itemize}\small"] + [f"\\item {tex(claimed)}: {tex(why)}" for claimed, why in notes] + [r"\end{itemize}"]
         rows = []
         for s in ss:
             for k, r in enumerate(s["rows"]):
