@@ -120,25 +120,3 @@ def run_figure(f, suffix, stem):
         ax.legend()
     ax.grid(True, alpha=0.3)
     return save(fig, stem)
-
-
-def order_overview(rows, stem):
-    """Observed order (± 2 standard errors) against expected order for every claimed error: the
-    whole catalogue's convergence claims in one figure (for the publication bundle)."""
-    rows = [r for r in rows if num(r["row"].get("expected")) and num(r["row"].get("observed"))]
-    if not rows:
-        return None
-    fig, ax = plt.subplots(figsize=(5.6, max(2.5, 0.16 * len(rows) + 1)))
-    colour = {"verified": "C2", "known failure": "#80269a", "fail": "C3"}  # the report's colours
-    for k, r in enumerate(rows):
-        row = r["row"]
-        err = 2 * row["se"] if num(row.get("se")) else 0
-        ax.errorbar(row["observed"], k, xerr=err, fmt="o", ms=3, color=colour.get(row["outcome"], "C0"))
-        band = row.get("band") or 0
-        ax.plot([row["expected"] - band, row["expected"] + band], [k, k], "-", color="0.6", lw=4, alpha=0.5)
-    ax.set_yticks(range(len(rows)))
-    ax.set_yticklabels([r["label"] for r in rows], fontsize=6)
-    ax.invert_yaxis()
-    ax.set_xlabel("order of convergence: observed ± 2 s.e. (dots), expected band (grey)")
-    ax.grid(True, axis="x", alpha=0.3)
-    return save(fig, stem)
