@@ -29,6 +29,8 @@ def tex(text):
         elif ch in "\\{}%&#$^~<>|":
             out.append({"\\": r"\textbackslash{}", "^": r"\^{}", "~": r"\~{}", "<": r"$<$", ">": r"$>$",
                         "|": r"$|$"}.get(ch, "\\" + ch))
+        elif ch in ",=":  # settings (euler=26,integrator=chapter) may break after a comma or an equals sign
+            out.append(ch + r"\allowbreak{}")
         elif ord(ch) < 128:
             out.append(ch)
         elif ch in MATH:
@@ -133,7 +135,8 @@ def run_caption(case, s, name):
 
 def hydro_figures(sweeps, made):
     """Per hydrodynamics case present, its default variant's density profile at the finest level
-    (else its first profile) beside its first convergence figure with an order claim."""
+    (else its first profile) and the convergence of its density error (else its first error with
+    an order claim), where drawn."""
     pairs = []
     for case in HYDRO:
         if case not in sweeps:
@@ -142,7 +145,8 @@ def hydro_figures(sweeps, made):
         mine = [m for m in made if m[0] == case and m[1] is not None and m[1]["variant"] == s["variant"]]
         runs = [m for m in mine if m[3] == "run"]
         prof = next((m for m in runs if m[2] == "profile_rho"), next((m for m in runs if m[2].startswith("profile")), None))
-        conv = next((m for m in mine if m[3] == "convergence"), None)
+        convs = [m for m in mine if m[3] == "convergence"]
+        conv = next((m for m in convs if "rho" in m[2]), convs[0] if convs else None)
         pair = [m for m in (prof, conv) if m]
         if pair:
             pairs.append(pair)
@@ -235,13 +239,17 @@ def main_section(sweeps, tier, made, figs):
     t += long_table(r"case: compared against; error & at finest $n$ & observed order & expected & outcome",
                     "l l l l l", rows, "Verification summary: each case (in bold, with what it is compared against) and the "
                 "errors of its default variant that carry an order claim or fail.", "tab:verification")
-    for pair in hydro_figures(sweeps, made):  # two per float: readable at half the text width
+    hydro = [m for pair in hydro_figures(sweeps, made) for m in pair]
+    for k in range(0, len(hydro), 2):  # two per float: readable at half the text width
+        pair = hydro[k:k + 2]
         names = [copy_figure(case, stem, figs) for case, _, _, _, stem in pair]
         caps = [f"({'ab'[j]}) " + (run_caption(case, s, name) if kind == "run" else
                                   convergence_caption(case, s, next(r for r in s["rows"] if r["error"] == name)))
                 for j, (case, s, name, kind, _) in enumerate(pair)]
         t += figure(names, ("Left to right: " if len(pair) > 1 else "") + " ".join(caps), 0.49 if len(pair) > 1 else 0.6)
-    picked = chosen(made, HYDRO)[:2]  # the other cases' widest convergence, in one float: the section stays within 4 pages
+    # The other cases' widest convergence, in one float, only beside at most one float of the
+    # hydrodynamics: with the summary table of a full catalogue the section then stays within 4 pages.
+    picked = chosen(made, HYDRO)[:2] if len(hydro) <= 2 else []
     if picked:
         names = [copy_figure(case, stem, figs) for case, s, row, stem in picked]
         caps = " ".join(f"({'ab'[j]}) {convergence_caption(case, s, row)}" for j, (case, s, row, _) in enumerate(picked))
@@ -267,10 +275,10 @@ def supplement(sweeps, made, figs):
         rows = []
         for s in ss:
             for k, r in enumerate(s["rows"]):
-                rows.append(f"{tex(s['variant']) if k == 0 else ''} & {tex(r['error'])} & {sci(r.get('fine_value'))} ($n={s['levels'][-1]}$) & "
+                rows.append(f"{ragged(tex(s['variant'])) if k == 0 else ''} & {ragged(tex(r['error']))} & {sci(r.get('fine_value'))} ($n={s['levels'][-1]}$) & "
                             f"{order_tex(r)} & {expected_tex(r)} & {outcome_tex(r)} & {ragged(tex(row_note(s, r)))} \\tabularnewline")
         if rows:
-            t += long_table("variant & error & at finest $n$ & observed & expected & outcome & own reason", r"l l l l l l p{3.4cm}",
+            t += long_table("variant & error & at finest $n$ & observed & expected & outcome & own reason", r"p{2.0cm} p{2.2cm} l l l l p{3.0cm}",
                             rows, f"{tex(case)}: every variant (the claims' reasons are listed above).", f"tab:supp-{slug(case)}")
         checks = []
         for s in ss:
