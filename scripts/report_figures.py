@@ -17,10 +17,10 @@ def save(fig, stem):
     # Fixed margins with room for labels of up to three lines (wrap()): "tight" bounding boxes or
     # constrained layout cost a further draw of every figure, nearly doubling the report's time.
     fig.subplots_adjust(left=0.16, right=0.97, bottom=0.15, top=0.89)
-    for ax in fig.axes:  # a log axis over less than two decades labels some minor ticks too (one major tick says little)
-        for axis in (ax.xaxis, ax.yaxis):
+    for ax in fig.axes:  # a log axis over less than a decade labels some minor ticks too (one major tick says little;
+        for axis in (ax.xaxis, ax.yaxis):  # over more, minor labels run into each other)
             if axis.get_scale() == "log" and isinstance(axis.get_minor_formatter(), matplotlib.ticker.LogFormatter):
-                axis.set_minor_formatter(matplotlib.ticker.LogFormatterSciNotation(labelOnlyBase=False, minor_thresholds=(2, 0.5)))
+                axis.set_minor_formatter(matplotlib.ticker.LogFormatterSciNotation(labelOnlyBase=False, minor_thresholds=(1, 0.5)))
     for ext in ("png", "pdf"):
         fig.savefig(file_of(stem, ext), dpi=110)
     plt.close(fig)
