@@ -254,7 +254,7 @@ def check_rows(s, checks):
 
 
 def definition(ss, error):
-    """', the definition' of an error for a caption (its axis shows only the name)."""
+    """' (the definition)' of an error for a caption (its axis shows only the name)."""
     text = next((s["error_defs"][error] for s in ss if error in s.get("error_defs", {})), "")
     return f" ({text})" if text else ""
 
