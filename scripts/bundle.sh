@@ -55,5 +55,5 @@ if command -v pdflatex >/dev/null; then
     echo "bundle: $out/$doc.pdf: $(grep -o '([0-9]* pages\?' "$out/$doc.log" | tr -d '(')"
   done
 else
-  echo "bundle: pdflatex not found (Debian texlive-latex-base): the .tex files are written but not compiled"
+  echo "bundle: pdflatex not found (bash scripts/install-deps.sh --tex installs it): the .tex files are written but not compiled"
 fi

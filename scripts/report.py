@@ -21,18 +21,20 @@ from urllib.parse import quote
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import report_figures as figs  # noqa: E402
-from report_data import (counts, errors_of, expected_text, fmt, is_dirty, load, num, order_text,  # noqa: E402
-                         provenances, read_json, row_reason, slug, sweep_wide_failures)
+from report_data import (OUTCOMES, claim_notes, counts, errors_of, expected_text, file_of, fmt, is_dirty, load, num, order_text,  # noqa: E402
+                         provenances, read_json, row_note, row_reason, slug, sweep_wide_failures, threads_text)
 
 ROOT = Path(__file__).resolve().parent.parent
 CSS = """body{font-family:sans-serif;max-width:1250px;margin:auto;padding:0 12px;line-height:1.35}
 table{border-collapse:collapse;margin:8px 0}td,th{border:1px solid #ccc;padding:2px 6px;font-size:13px;vertical-align:top}
 th{background:#f2f2f2;text-align:left}td.num{text-align:right;white-space:nowrap}td.nw{white-space:nowrap}td.var{overflow-wrap:anywhere;max-width:160px}tr.first td{border-top:2px solid #888}
-.verified{color:#060}.noclaim{color:#845b00}.fail{color:#b00;font-weight:bold}.drift{color:#666}
+.verified{color:#060}.known{color:#80269a}.noclaim{color:#845b00}.fail{color:#b00;font-weight:bold}.drift{color:#666}
+p.verdict{font-size:22px;font-weight:bold;margin:6px 0}p.verdict.pass{color:#060}p.verdict.fail{color:#b00}
+ul.claims{font-size:14px}ul.claims li{margin:3px 0}
 .counts span{display:inline-block;margin-right:18px;font-size:18px}.why{font-size:12px;color:#333;min-width:200px;max-width:400px}
 div.figs{display:flex;flex-wrap:wrap;gap:8px}figure{margin:0;width:600px}figcaption{font-size:12px}
 img{max-width:100%;border:1px solid #ddd}.prov{font-size:12px;color:#333}p.claim{font-size:15px;background:#f6f8fa;padding:8px}"""
-CLS = {"verified": "verified", "no order claimed": "noclaim", "fail": "fail"}
+CLS = {"verified": "verified", "known failure": "known", "no order claimed": "noclaim", "fail": "fail"}
 
 
 def e(text):
@@ -42,6 +44,15 @@ def e(text):
 def page(title, body):
     return (f"<!doctype html><html><head><meta charset='utf-8'><title>{e(title)}</title><style>{CSS}</style>"
             f"</head><body>{body}</body></html>\n")
+
+
+LABEL = {"verified": "verified", "known failure": "known failures", "no order claimed": "no order claimed", "fail": "fail"}
+
+
+def outcome_count(c, outcome):
+    """'3 verified', '1 known failure', '2 known failures'."""
+    n = c.get(outcome, 0)
+    return f"{n} {LABEL[outcome] if n != 1 or outcome != 'known failure' else outcome}"
 
 
 def outcome_cell(outcome):
@@ -91,12 +102,15 @@ def point_files(results, out, s):
 
 def provenance_html(sweeps, tier):
     provs = provenances(sweeps)
-    keys = ["git_commit", "build_type", "compiler", "cxx_flags", "isa_path", "host", "cpu", "cores", "threads"]
+    keys = ["git_commit", "build_type", "compiler", "cxx_flags", "isa_path", "host", "cpu", "cores"]
     parts = [f"<b>tier</b> {e(tier)}"]
     for k in keys:
         vals = sorted({str(p.get(k)) for p in provs if k in p})
         if vals:
             parts.append(f"<b>{e(k)}</b> {e(' | '.join(vals))}" + (" <span class='fail'>(mixed)</span>" if len(vals) > 1 else ""))
+    threads = sorted({p["threads"] for p in provs if num(p.get("threads"))})
+    if threads:  # points run on different counts by design (sphv verify gives long ones every core)
+        parts.append(f"<b>threads per point</b> {threads[0]}" + (f" to {threads[-1]} (each run's count: case pages)" if len(threads) > 1 else ""))
     dirty = sum(is_dirty(p) for p in provs)
     parts.append(f"<b>tree</b> <span class='fail'>dirty in {dirty} of {len(provs)} runs</span>" if dirty else
                  "<b>tree</b> clean (no run records uncommitted changes)")
@@ -136,24 +150,76 @@ def summary_table(sweeps, missing):
     return "".join(t) + "</table>"
 
 
+def counts_html(c, fail_href=None):
+    """The summary line: each outcome's count in its colour; the failures link to their rows."""
+    fail = f"{c['fail']} fail"
+    if fail_href and c["fail"]:
+        fail = f"<a class='fail' href='{fail_href}'>{fail}</a>"
+    return ("<p class='counts'>" + "".join(f"<span class='{CLS[k]}'>{outcome_count(c, k)}</span>" for k in OUTCOMES[:-1])
+            + f"<span class='fail'>{fail}</span></p>")
+
+
+def failing_rows(sweeps, missing):
+    """Every failure, with a link to its variant: failing error rows, sweep-wide failures of a
+    sweep with no failing row, and summary.json entries without a sweep.json."""
+    t = []
+    for case, ss in sorted(sweeps.items()):
+        for s in ss:
+            href = e(f"{case_page_name(case)}#{variant_anchor(s)}")
+            link = f"<td class='nw'><a href='{href}'>{e(case)}</a></td><td class='var'><a href='{href}'>{e(s['variant'])}</a></td>"
+            bad = [r for r in s["rows"] if r["outcome"] == "fail"]
+            for r in bad:
+                t.append(f"<tr>{link}<td class='nw'>{e(r['error'])}</td><td class='num'>{fmt(r.get('fine_value'))}</td>{order_cell(r)}"
+                         f"<td class='num'>{e(expected_text(r))}</td><td class='why'>{e(row_reason(s, r))}</td></tr>")
+            if not s["passed"] and not bad:
+                wide = sweep_wide_failures(s)
+                t.append(f"<tr>{link}<td>(whole sweep)</td><td colspan=3></td><td class='why'>"
+                         f"{e('failed: ' + ', '.join(wide)) if wide else 'failed (see the case page)'}</td></tr>")
+    for m in missing:
+        t.append(f"<tr><td>{e(m['case'])}</td><td>{e(m['variant'])}</td><td colspan=4></td>"
+                 f"<td class='why'>in summary.json but no sweep.json was written</td></tr>")
+    if not t:
+        return ""
+    return ("<h2 id='failing'>Failing</h2><table><tr><th>case</th><th>variant</th><th>error</th><th>error at finest n</th>"
+            "<th>observed order ± s.e.</th><th>expected ± band</th><th>reason</th></tr>" + "".join(t) + "</table>")
+
+
+def cases_table(sweeps, missing):
+    """One line per case: its variants, each outcome's count and its run time, linking its page."""
+    t = ["<h2 id='cases'>Cases</h2><table><tr><th>case</th><th>variants</th>" + "".join(
+        f"<th class='{CLS[k]}'>{e(LABEL[k])}</th>" for k in OUTCOMES) + "<th>run time s</th></tr>"]
+    for case, ss in sorted(sweeps.items()):
+        c = {k: sum(r["outcome"] == k for s in ss for r in s["rows"]) for k in OUTCOMES}
+        failed = sum(not s["passed"] for s in ss) + sum(m["case"] == case for m in missing)
+        t.append(f"<tr><td class='nw'><a href='{e(case_page_name(case))}'>{e(case)}</a></td><td class='num'>{len(ss)}"
+                 + (f" (<span class='fail'>{failed} failing</span>)" if failed else "") + "</td>"
+                 + "".join(f"<td class='num{' ' + CLS[k] if c[k] and k in ('fail', 'known failure') else ''}'>{c[k]}</td>" for k in OUTCOMES)
+                 + f"<td class='num'>{sum(s.get('wall_time_s', 0) for s in ss):.1f}</td></tr>")
+    for case in sorted({m["case"] for m in missing} - set(sweeps)):
+        t.append(f"<tr><td>{e(case)}</td><td class='num'><span class='fail'>no sweep.json</span></td>"
+                 + "<td></td>" * len(OUTCOMES) + "<td></td></tr>")
+    return "".join(t) + "</table>"
+
+
 def index_page(name, sweeps, missing, tier, mutants_link):
     c = counts(sweeps)
-    n_sweeps = sum(len(ss) for ss in sweeps.values())
+    n_sweeps = sum(len(ss) for ss in sweeps.values()) + len(missing)
     failing = sum(not s["passed"] for ss in sweeps.values() for s in ss) + len(missing)
     wall = sum(s.get("wall_time_s", 0) for ss in sweeps.values() for s in ss)
-    body = [f"<h1>sphv verification report: {e(name)}</h1>", provenance_html(sweeps, tier),
-            "<p class='counts'>"
-            f"<span class='verified'>{c['verified']} verified</span>"
-            f"<span class='noclaim'>{c['no order claimed']} no order claimed</span>"
-            f"<span class='fail'>{c['fail']} fail</span></p>",
-            f"<p>{len(sweeps)} cases, {n_sweeps} case variants ({failing} failing), summed run time {wall:.1f} s. "
-            "Each row is one error of one case variant at its finest level. <b>verified</b>: the observed order lies in "
-            "the expected band (widened by two standard errors of the fit) and the error is under its bound; "
-            "<b>no order claimed</b>: the case says why (the reason column) and its other checks pass; <b>fail</b>: a "
-            "check on that error failed. Click a case for its claim, every check and the figures.</p>"]
+    verdict = (f"<p class='verdict fail'>FAIL: {failing} of {n_sweeps} case variants fail (<a href='#failing'>the failing rows</a>)</p>"
+               if failing else f"<p class='verdict pass'>PASS: all {n_sweeps} case variants pass</p>")
+    body = [f"<h1>sphv verification report: {e(name)}</h1>", verdict, counts_html(c, "#failing"),
+            failing_rows(sweeps, missing), cases_table(sweeps, missing),
+            f"<p>{len(sweeps)} cases, {n_sweeps} case variants, summed run time {wall:.1f} s. Each count is of errors of a case "
+            "variant at its finest level. <b class='verified'>verified</b>: the observed order lies in the expected band (widened "
+            "by two standard errors of the fit) and the error is under its bound; <b class='known'>known failure</b>: the error "
+            "misses its claimed order for a reason the case states, and the case names the variant or setting that does "
+            "converge; <b class='noclaim'>no order claimed</b>: the case says why, and its other checks pass; "
+            "<b class='fail'>fail</b>: a check on that error failed. Click a case for its claim, figures and every check.</p>",
+            provenance_html(sweeps, tier)]
     if mutants_link:
         body.append(f"<p><a href='{mutants_link}'>Mutation testing: which seeded faults the gates catch</a></p>")
-    body.append(summary_table(sweeps, missing))
+    body.append("<h2 id='all'>Every error of every variant</h2>" + summary_table(sweeps, missing))
     return page(f"sphv report: {name}", "".join(body))
 
 
@@ -168,29 +234,33 @@ def claim_sentence(case, ss):
         text += f"; no order claimed for {e(', '.join(no_claim))}." if no_claim else "."
     elif no_claim:
         text += f"No order is claimed ({e(', '.join(no_claim))}): the checks bound the errors themselves."
-    c = {k: sum(r["outcome"] == k for s in ss for r in s["rows"]) for k in ("verified", "no order claimed", "fail")}
-    text += (f" Over {len(ss)} variant{'s' if len(ss) > 1 else ''}: {c['verified']} verified, "
-             f"{c['no order claimed']} no order claimed, {c['fail']} fail.")
-    return f"<p class='claim'>{text}</p>"
-
-
-def claim_why(s, row):
-    """The case's reason for its order claim, under the outcome's reason (not repeated)."""
-    why = s.get("claims", {}).get(row["error"], {}).get("why", "")
-    return f"<br><i>claim:</i> {e(why)}" if why and why != row_reason(s, row) else ""
+    c = {k: sum(r["outcome"] == k for s in ss for r in s["rows"]) for k in OUTCOMES}
+    text += f" Over {len(ss)} variant{'s' if len(ss) > 1 else ''}: " + ", ".join(outcome_count(c, k) for k in OUTCOMES) + "."
+    notes = claim_notes(ss)
+    claims = ("<ul class='claims'>" + "".join(
+        f"<li><span class='{'known' if 'known failure' in claimed else ''}'>{e(claimed)}</span>: {e(why)}</li>"
+        for claimed, why in notes) + "</ul>") if notes else ""
+    return f"<p class='claim'>{text}</p>{claims}"
 
 
 def check_rows(s, checks):
+    claimed = {c.get("why") for c in s.get("claims", {}).values()} - {None, ""}
     return "".join(
         f"<tr><td>{e(c['name'])}</td><td>{e(c.get('error') or '(whole sweep)')}</td>"
         f"<td class='{'drift' if c.get('kind') == 'drift' else ''}'>{e(c.get('kind', 'verification'))}</td>"
         f"<td class='num'>{fmt(c.get('value'), '.4g')}</td><td class='num'>[{fmt(c.get('lo'), '.4g')}, {fmt(c.get('hi'), '.4g')}]</td>"
-        f"<td class='{'verified' if c['pass'] else 'fail'}'>{'pass' if c['pass'] else 'FAIL'}</td><td class='why'>{e(c.get('why', ''))}</td></tr>"
+        f"<td class='{'verified' if c['pass'] else 'fail'}'>{'pass' if c['pass'] else 'FAIL'}</td><td class='why'>{e(c.get('why', '')) if c.get('why') not in claimed else '<i>the claim&#39;s reason (above)</i>'}</td></tr>"
         for c in checks)
 
 
+def definition(ss, error):
+    """' (the definition)' of an error for a caption (its axis shows only the name)."""
+    text = next((s["error_defs"][error] for s in ss if error in s.get("error_defs", {})), "")
+    return f" ({text})" if text else ""
+
+
 def figure_html(out, stem, caption):
-    png, pdf = (quote(stem.with_suffix(x).relative_to(out).as_posix()) for x in (".png", ".pdf"))
+    png, pdf = (quote(file_of(stem, x).relative_to(out).as_posix()) for x in ("png", "pdf"))
     return (f"<figure><a href='{e(png)}'><img src='{e(png)}' alt='{e(caption)}'></a>"
             f"<figcaption>{e(caption)} (<a href='{e(pdf)}'>PDF</a>)</figcaption></figure>")
 
@@ -198,6 +268,42 @@ def figure_html(out, stem, caption):
 def case_page(case, ss, results, out, made):
     figdir = out / "fig" / slug(case)
     body = ["<p><a href='index.html'>&larr; summary of all cases</a></p>", f"<h1>{e(case)}</h1>", claim_sentence(case, ss)]
+    body.append("<h2>Figures</h2><p>Convergence figures only for errors with an order claim; errors without one are "
+                "tabulated per level. Each figure links its vector PDF.</p>")
+    claimed = [n for n in dict.fromkeys(r["error"] for s in ss for r in s["rows"] if num(r.get("expected")))]
+    walls = []
+    for err in claimed:
+        stem = figs.wall_time(case, ss, err, figdir / f"wall_{slug(err)}")
+        if stem:
+            made.append((case, None, err, "wall", stem))
+            walls.append(figure_html(out, stem, f"{err}{definition(ss, err)} against the wall time of each run, every variant; "
+                                                  f"runs on {threads_text(r for s in ss for r in s['runs'])}"))
+    if walls:
+        body.append("<h3>Error against run time</h3><div class='figs'>" + "".join(walls) + "</div>")
+    for s in ss:
+        v = slug(s["variant"])
+        body.append(f"<h3>{e(s['variant'])}</h3><div class='figs'>")
+        for row in s["rows"]:
+            stem = figs.convergence(case, s, row, figdir / f"{v}_{slug(row['error'])}_convergence") if num(row.get("expected")) else None
+            if stem:
+                made.append((case, s, row["error"], "convergence", stem))
+                body.append(figure_html(out, stem, f"{row['error']}{definition([s], row['error'])} against n "
+                                                   f"({s.get('n_counts', 'resolution')}), {s['variant']}: {row['outcome']}"))
+        if s["runs"]:
+            for f in s["runs"][-1].get("figures", []):
+                stem = figs.run_figure(f, f" [{s['variant']}, n = {s['levels'][-1]}]", figdir / f"{v}_run_{slug(f['name'])}")
+                if stem:
+                    made.append((case, s, f["name"], "run", stem))
+                    body.append(figure_html(out, stem, f"{f['title']} (finest run, n = {s['levels'][-1]})"))
+        body.append("</div>")
+        unclaimed = [err for err in errors_of(s) if not any(r["error"] == err and num(r.get("expected")) for r in s["rows"])]
+        if unclaimed:
+            body.append("<table><tr><th>error (no order claimed)</th>" + "".join(f"<th>n = {n}</th>" for n in s["levels"]) + "</tr>")
+            for err in unclaimed:
+                body.append(f"<tr><td>{e(err)}</td>" + "".join(f"<td class='num'>{fmt(r.get('errors', {}).get(err), '.3e')}</td>"
+                                                            for r in s["runs"]) + "</tr>")
+            body.append("</table>")
+
     defs = {}
     for s in ss:
         for k, v in s.get("error_defs", {}).items():
@@ -209,13 +315,13 @@ def case_page(case, ss, results, out, made):
     body.append(f"<p>n: {e(ss[0].get('n_counts', ''))}. Tier: {e(tier)}.</p>")
 
     body.append("<h2>Outcome per error</h2><table><tr><th>variant</th><th>error</th><th>levels n</th><th>error at finest n</th>"
-                "<th>observed ± s.e.</th><th>expected ± band</th><th>outcome</th><th>why / what it rests on</th></tr>")
+                "<th>observed ± s.e.</th><th>expected ± band</th><th>outcome</th><th>what it rests on (beyond the claim above)</th></tr>")
     for s in ss:
         for k, row in enumerate(s["rows"]):
             body.append(f"<tr{' class=first' if k == 0 else ''}><td>{e(s['variant']) if k == 0 else ''}</td><td>{e(row['error'])}</td>"
                         f"<td>{e(', '.join(map(str, s['levels'])))}</td><td class='num'>{fmt(row.get('fine_value'))}</td>"
                         f"{order_cell(row)}<td class='num'>{e(expected_text(row))}</td>{outcome_cell(row['outcome'])}"
-                        f"<td class='why'>{e(row_reason(s, row))}{claim_why(s, row)}</td></tr>")
+                        f"<td class='why'>{e(row_note(s, row))}</td></tr>")
     body.append("</table>")
 
     body.append("<h2>Every check</h2><p><b>verification</b>: against an independent reference (analytic solution, exact "
@@ -241,48 +347,15 @@ def case_page(case, ss, results, out, made):
                                 f"<td class='num'>{fmt(g.get('order'), '.2f')}</td><td class='num'>{fmt(g.get('Fs'), 'g')}</td>"
                                 f"<td class='num'>{fmt(g.get('gci'), '.2e')}</td></tr>" for k, g in s["gci"].items()) + "</table>")
 
-    body.append("<h2>Figures</h2><p>Convergence figures only for errors with an order claim; errors without one are "
-                "tabulated per level. Each figure links its vector PDF.</p>")
-    claimed = [n for n in dict.fromkeys(r["error"] for s in ss for r in s["rows"] if num(r.get("expected")))]
-    walls = []
-    for err in claimed:
-        stem = figs.wall_time(case, ss, err, figdir / f"wall_{slug(err)}")
-        if stem:
-            made.append((case, None, err, "wall", stem))
-            walls.append(figure_html(out, stem, f"{err} against the wall time of each run, every variant"))
-    if walls:
-        body.append("<h3>Error against run time</h3><div class='figs'>" + "".join(walls) + "</div>")
-    for s in ss:
-        v = slug(s["variant"])
-        body.append(f"<h3>{e(s['variant'])}</h3><div class='figs'>")
-        for row in s["rows"]:
-            stem = figs.convergence(case, s, row, figdir / f"{v}_{slug(row['error'])}_convergence") if num(row.get("expected")) else None
-            if stem:
-                made.append((case, s, row["error"], "convergence", stem))
-                body.append(figure_html(out, stem, f"{row['error']} against n, {s['variant']}: {row['outcome']}"))
-        if s["runs"]:
-            for f in s["runs"][-1].get("figures", []):
-                stem = figs.run_figure(f, f" [{s['variant']}, n = {s['levels'][-1]}]", figdir / f"{v}_run_{slug(f['name'])}")
-                if stem:
-                    made.append((case, s, f["name"], "run", stem))
-                    body.append(figure_html(out, stem, f"{f['title']} (finest run, n = {s['levels'][-1]})"))
-        body.append("</div>")
-        unclaimed = [err for err in errors_of(s) if not any(r["error"] == err and num(r.get("expected")) for r in s["rows"])]
-        if unclaimed:
-            body.append("<table><tr><th>error (no order claimed)</th>" + "".join(f"<th>n = {n}</th>" for n in s["levels"]) + "</tr>")
-            for err in unclaimed:
-                body.append(f"<tr><td>{e(err)}</td>" + "".join(f"<td class='num'>{fmt(r.get('errors', {}).get(err), '.3e')}</td>"
-                                                            for r in s["runs"]) + "</tr>")
-            body.append("</table>")
-
     body.append("<h2>Runs and their files</h2><table><tr><th>variant</th><th>n</th><th>particles</th><th>wall s</th>"
-                "<th>verdict</th><th>files</th></tr>")
+                "<th>threads</th><th>verdict</th><th>files</th></tr>")
     for s in ss:
         links = point_files(results, out, s)
         for n, run, have in zip(s["levels"], s["runs"], links):
             files = " ".join(f"<a href='{e(quote(rel))}'>{e(name)}</a>" for name, rel in have) or "(not kept)"
             body.append(f"<tr><td>{e(s['variant'])}</td><td class='num'>{n}</td><td class='num'>{run.get('n_particles', '–')}</td>"
-                        f"<td class='num'>{fmt(run.get('wall_time_s'), '.3g')}</td><td>{e(run.get('verdict', ''))}</td><td>{files}</td></tr>")
+                        f"<td class='num'>{fmt(run.get('wall_time_s'), '.3g')}</td><td class='num'>{run.get('provenance', {}).get('threads', '–')}</td>"
+                        f"<td>{e(run.get('verdict', ''))}</td><td>{files}</td></tr>")
     body.append("</table>")
     return page(f"sphv: {case}", "".join(body))
 
@@ -365,8 +438,8 @@ def main():
         mutants_link = "mutants.html"
     (out / "index.html").write_text(index_page(a.name, sweeps, missing, tier, mutants_link))
     c = counts(sweeps)
-    print(f"report: {out / 'index.html'} ({len(sweeps)} cases; {c['verified']} verified, "
-          f"{c['no order claimed']} no order claimed, {c['fail']} fail; {len(made)} figures)")
+    print(f"report: {out / 'index.html'} ({len(sweeps)} cases; " + ", ".join(outcome_count(c, k) for k in OUTCOMES)
+          + f"; {len(made)} figures)")
     if a.bundle:
         import report_tex
         report_tex.write_bundle(a.bundle, sweeps, tier, made, out)

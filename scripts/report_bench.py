@@ -2,7 +2,7 @@
 import html
 
 import report_figures as figs
-from report_data import fmt, is_dirty, read_json
+from report_data import file_of, fmt, is_dirty, read_json
 
 
 def pct(x):
@@ -33,7 +33,7 @@ def bench_body(results, out):
     for f in b["figures"]:
         stem = figs.run_figure(f, "", out / "fig" / "bench" / f["name"])
         if stem:
-            png, pdf = (stem.with_suffix(x).relative_to(out).as_posix() for x in (".png", ".pdf"))
+            png, pdf = (file_of(stem, x).relative_to(out).as_posix() for x in ("png", "pdf"))
             body.append(f"<figure><a href='{e(png)}'><img src='{e(png)}' alt='{e(f['title'])}'></a>"
                         f"<figcaption>{e(f['title'])} (<a href='{e(pdf)}'>PDF</a>)</figcaption></figure>")
     body.append("</div><table><tr><th>stage</th><th>N</th><th>threads</th><th>seconds</th><th>particle updates/s</th>"

@@ -7,7 +7,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import matplotlib.ticker  # noqa: E402
 import numpy as np  # noqa: E402
 
-from report_data import claim, num, series, wrap  # noqa: E402
+from report_data import claim, file_of, num, series, wrap  # noqa: E402
 
 plt.rcParams.update({"pdf.fonttype": 42, "font.size": 8, "axes.titlesize": 9, "legend.fontsize": 7})
 
@@ -17,19 +17,14 @@ def save(fig, stem):
     # Fixed margins with room for labels of up to three lines (wrap()): "tight" bounding boxes or
     # constrained layout cost a further draw of every figure, nearly doubling the report's time.
     fig.subplots_adjust(left=0.16, right=0.97, bottom=0.15, top=0.89)
+    for ax in fig.axes:  # a log axis over less than a decade labels some minor ticks too (one major tick says little;
+        for axis in (ax.xaxis, ax.yaxis):  # over more, minor labels run into each other)
+            if axis.get_scale() == "log" and isinstance(axis.get_minor_formatter(), matplotlib.ticker.LogFormatter):
+                axis.set_minor_formatter(matplotlib.ticker.LogFormatterSciNotation(labelOnlyBase=False, minor_thresholds=(1, 0.5)))
     for ext in ("png", "pdf"):
-        fig.savefig(stem.with_suffix(f".{ext}"), dpi=110)
+        fig.savefig(file_of(stem, ext), dpi=110)
     plt.close(fig)
     return stem
-
-
-def n_label(s):
-    return wrap(f"n: {s.get('n_counts') or 'resolution'}", 70)
-
-
-def error_label(s, error):
-    text = s.get("error_defs", {}).get(error)
-    return wrap(f"{error}: {text}" if text else error, 55)
 
 
 def convergence(case, s, row, stem):
@@ -56,8 +51,8 @@ def convergence(case, s, row, stem):
         ax.fill_between(n, guide(q - band), guide(q + band), color="C3", alpha=0.12, lw=0)
     ax.set_xticks(n, [f"{v:g}" for v in n])  # the levels themselves, not powers of ten
     ax.xaxis.set_minor_formatter(matplotlib.ticker.NullFormatter())
-    ax.set_xlabel(n_label(s))
-    ax.set_ylabel(error_label(s, e))
+    ax.set_xlabel("n")  # what n counts is in the caption
+    ax.set_ylabel(e)  # the error's name; its definition is in the caption (a long one would be clipped)
     ax.set_title(f"{case} [{s['variant']}]: {e} against n ({row['outcome']})")
     ax.legend()
     ax.grid(True, which="both", alpha=0.3)
@@ -86,7 +81,7 @@ def wall_time(case, ss, error, stem):
         plt.close(fig)
         return None
     ax.set_xlabel("wall time of the run [s]")
-    ax.set_ylabel(error_label(ss[0], error))
+    ax.set_ylabel(error)
     ax.set_title(f"{case}: {error} against run time, one line per variant")
     ax.legend()
     ax.grid(True, which="both", alpha=0.3)
@@ -124,26 +119,4 @@ def run_figure(f, suffix, stem):
     if any(line.get_label() and not line.get_label().startswith("_") for line in ax.get_lines()):
         ax.legend()
     ax.grid(True, alpha=0.3)
-    return save(fig, stem)
-
-
-def order_overview(rows, stem):
-    """Observed order (± 2 standard errors) against expected order for every claimed error: the
-    whole catalogue's convergence claims in one figure (for the publication bundle)."""
-    rows = [r for r in rows if num(r["row"].get("expected")) and num(r["row"].get("observed"))]
-    if not rows:
-        return None
-    fig, ax = plt.subplots(figsize=(5.6, max(2.5, 0.16 * len(rows) + 1)))
-    colour = {"verified": "C2", "fail": "C3"}
-    for k, r in enumerate(rows):
-        row = r["row"]
-        err = 2 * row["se"] if num(row.get("se")) else 0
-        ax.errorbar(row["observed"], k, xerr=err, fmt="o", ms=3, color=colour.get(row["outcome"], "C0"))
-        band = row.get("band") or 0
-        ax.plot([row["expected"] - band, row["expected"] + band], [k, k], "-", color="0.6", lw=4, alpha=0.5)
-    ax.set_yticks(range(len(rows)))
-    ax.set_yticklabels([r["label"] for r in rows], fontsize=6)
-    ax.invert_yaxis()
-    ax.set_xlabel("order of convergence: observed ± 2 s.e. (dots), expected band (grey)")
-    ax.grid(True, axis="x", alpha=0.3)
     return save(fig, stem)

@@ -3,22 +3,26 @@
 reader relies on: no warning on stderr, every href and src resolves inside the folder, the
 counts at the top match the rows of the sweep.json files, a convergence figure (PNG and PDF)
 for every claimed error of every variant and none for errors without an order claim, a
-run-time figure per claimed error, and with --mutants the kill matrix page. With --dirty it
+run-time figure per claimed error, every figure entry its own file, the bundle's provenance
+(each point's own threads, dates and wall time), and with --mutants the kill matrix page. With --dirty it
 also checks that a bundle of results whose provenance records a dirty tree is refused
 (--allow-dirty is exercised by bundle_test.sh).
 
 usage: report_test.py RESULTS_DIR WORK_DIR [--mutants FILE] [--dirty]"""
+import html
 import json
 import re
 import shutil
 import subprocess
 import sys
 from pathlib import Path
+from urllib.parse import unquote
 
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
+import report_tex  # noqa: E402
 from report_check_links import broken_links  # noqa: E402
-from report_data import num, series, slug  # noqa: E402
+from report_data import file_of, num, series, slug  # noqa: E402
 
 failures = []
 
@@ -31,6 +35,78 @@ def expect(cond, what):
 def report(results, reports, *extra):
     return subprocess.run([sys.executable, str(HERE / "report.py"), str(results), "--name", "t", "--reports", str(reports), *extra],
                           capture_output=True, text=True)
+
+
+def first_screen(index, sweeps):
+    """The index opens with the verdict, then (when anything fails) the failing rows with links to
+    their variants, then one line per case linking its page, and only then the full table."""
+    failing = [(s, r) for s in sweeps for r in s["rows"] if r["outcome"] == "fail"]
+    n = len(sweeps)
+    bad = sum(not s["passed"] for s in sweeps)
+    verdict = re.search(r"<p class='verdict (pass|fail)'>(PASS|FAIL): ([^<]*)", index)
+    expect(verdict and (verdict.group(2) == "FAIL") == (bad > 0), f"verdict line {verdict and verdict.group(0)} for {bad} failing variants")
+    at = {k: index.find(f"id='{k}'") for k in ("failing", "cases", "all")}
+    expect(0 < at["cases"] < at["all"], f"the per-case lines do not precede the full table: {at}")
+    if failing:
+        expect(0 < at["failing"] < at["cases"], f"the failing rows do not come first: {at}")
+        section = index[at["failing"]:at["cases"]]
+        for s, r in failing:
+            href = f"case-{slug(s['case'])}.html#v-{slug(s['variant'])}"
+            expect(re.search(rf"<a href='{re.escape(href)}'>[^<]*</a></td><td class='nw'>{re.escape(r['error'])}</td>", section),
+                   f"failing row {s['case']} {s['variant']} {r['error']} not listed first with a link to {href}")
+        expect("href='#failing'" in index[:at["failing"]], "the verdict line does not link the failing rows")
+    cases = index[at["cases"]:at["all"]]
+    for case in {s["case"] for s in sweeps}:
+        expect(f"<a href='case-{slug(case)}.html'>{case}</a>" in cases, f"no line for case {case} linking its page")
+
+
+def distinct_figures(out, stdout):
+    """Every figure entry of every page has its own PNG and PDF: a name cut short (at a dot, say)
+    makes several entries show one file, which the link check cannot see."""
+    entries = []
+    for page in sorted(out.glob("*.html")):
+        for fig in re.findall(r"<figure>.*?</figure>", page.read_text()):
+            png = re.search(r"<img src='([^']+)'", fig).group(1)
+            pdf = re.search(r"<a href='([^']+\.pdf)'>PDF</a>", fig).group(1)
+            entries.append((page.name, unquote(png), unquote(pdf)))
+    for k, ext in ((1, "PNG"), (2, "PDF")):
+        files = [x[k] for x in entries]
+        shared = sorted({f for f in files if files.count(f) > 1})
+        expect(not shared, f"figure entries sharing a {ext} file: {shared}")
+    on_disk = len(list(out.glob("fig/**/*.png")))
+    expect(on_disk == len(entries), f"{on_disk} PNG files under fig/ for {len(entries)} figure entries")
+    m = re.search(r"; (\d+) figures\)", stdout)
+    expect(m and int(m.group(1)) == len(entries), f"report.py says {m and m.group(1)} figures, the pages show {len(entries)}")
+
+
+def bundle_checks(results, work, sweeps):
+    """The bundle's provenance takes each point's own threads, dates and wall time (result.json),
+    not the process that wrote sweep.json; each figure of the supplement is its own file."""
+    res = report(results, work, "--bundle", str(work / "bundle"), "--allow-dirty")  # the refusal is tested with --dirty
+    if res.returncode != 0:
+        return expect(False, f"bundle: exit {res.returncode} {res.stderr}")
+    runs = [r for s in sweeps for r in s["runs"]]
+    threads = sorted({r["provenance"]["threads"] for r in runs})
+    dates = sorted(r["provenance"]["date"] for r in runs)
+    prov = json.loads((work / "bundle" / "provenance.json").read_text())
+    expect(prov.get("threads_per_point") == threads, f"provenance.json threads {prov.get('threads_per_point')}, the points ran on {threads}")
+    expect(prov.get("points_ran") == [dates[0], dates[-1]], f"provenance.json points_ran {prov.get('points_ran')}, points ran {dates[0]} to {dates[-1]}")
+    wall = sum(r["wall_time_s"] for r in runs)
+    expect(abs(prov.get("points_wall_time_s", -1) - wall) < 1e-9 * wall, f"provenance.json wall time {prov.get('points_wall_time_s')}, points {wall}")
+    main_tex = (work / "bundle" / "verification.tex").read_text()
+    said = f"{threads[0]} to {threads[-1]} OpenMP threads per point" if len(threads) > 1 else f"{threads[0]} OpenMP thread"
+    expect(said in main_tex, f"verification.tex does not say '{said}'")
+    for case in sorted({s["case"] for s in sweeps} & set(report_tex.HYDRO)):  # the hydrodynamics in the main part
+        expect(f"{{figures/{slug(case)}_" in main_tex, f"verification.tex shows no {case} figure")
+    supp = (work / "bundle" / "verification-supplement.tex").read_text()
+    included = re.findall(r"\\includegraphics\[[^]]*\]\{figures/([^}]*)\}", supp)
+    shared = sorted({f for f in included if included.count(f) > 1})
+    expect(included and not shared, f"supplement figures sharing a file: {shared}")
+    known = sum(r["outcome"] == "known failure" for s in sweeps for r in s["rows"])
+    coloured = sum(report_tex.OUTCOME_TEX["known failure"] in line for line in supp.splitlines() if "&" in line)
+    expect(coloured == known, f"the supplement's tables colour {coloured} known failures of {known}")
+    m = re.search(r"; (\d+) figures\)", res.stdout)
+    expect(m and int(m.group(1)) == len(included), f"supplement includes {len(included)} figures of {m and m.group(1)}")
 
 
 def main():
@@ -52,13 +128,24 @@ def main():
     sweeps = [json.loads(f.read_text()) for f in sorted(results.glob("**/sweep.json"))]
     outcomes = [r["outcome"] for s in sweeps for r in s["rows"]]
     index = (out / "index.html").read_text()
-    for name in ("verified", "no order claimed", "fail"):
-        expect(f"{outcomes.count(name)} {name}</span>" in index, f"index does not count {outcomes.count(name)} {name}")
+    for name in ("verified", "known failure", "no order claimed", "fail"):
+        n = outcomes.count(name)
+        label = f"{n} {name}{'s' if name == 'known failure' and n != 1 else ''}"
+        expect(re.search(rf">{label}</(span|a)>", index), f"index does not count {label}")
+    if "known failure" in outcomes:  # the fixture has one
+        expect(re.search(r"<td class='known'>known failure</td>", index), "a known failure row is not shown in its own colour")
+    first_screen(index, sweeps)
     for s in sweeps:
         page = out / f"case-{slug(s['case'])}.html"
         expect(page.is_file() and f"case-{slug(s['case'])}.html" in index, f"no linked page for {s['case']}")
         text = page.read_text() if page.is_file() else ""
         expect("<p class='claim'>" in text, f"{page.name} does not open with the claim")
+        if "<figure>" in text:
+            expect(text.index("<figure>") < text.index("<table>"), f"{page.name}: tables before the figures")
+        for c in s.get("claims", {}).values():  # each claim's reason once, not once per row or check
+            if c.get("why"):
+                expect(text.count(html.escape(c["why"], quote=True)) == 1,
+                       f"{page.name}: the claim's reason appears {text.count(html.escape(c['why'], quote=True))} times: {c['why']}")
         for c in s["checks"]:
             expect(re.search(rf"<td>{re.escape(c['name'])}</td><td>[^<]*</td><td[^>]*>{c.get('kind', 'verification')}</td>", text),
                    f"{page.name}: check {c['name']} not listed with its kind")
@@ -67,12 +154,16 @@ def main():
             stem = fig / f"{slug(s['variant'])}_{slug(r['error'])}_convergence"
             want = num(r.get("expected")) and len(series(s, r["error"])) >= 2
             for ext in ("png", "pdf"):
-                expect(stem.with_suffix(f".{ext}").is_file() == want,
+                expect(file_of(stem, ext).is_file() == want,
                        f"{s['case']} {s['variant']} {r['error']}: convergence {ext} {'missing' if want else 'drawn without an order claim'}")
             if want:
                 expect((fig / f"wall_{slug(r['error'])}.pdf").is_file(), f"{s['case']} {r['error']}: no run-time figure")
+                d = s.get("error_defs", {}).get(r["error"])  # the axis shows the name, the caption the definition
+                expect(not d or re.search(rf"<figcaption>{re.escape(r['error'])} \({re.escape(html.escape(d, quote=True))}\) against n",
+                                          text), f"{page.name}: the {r['error']} convergence caption does not define it")
     for png in out.glob("fig/**/*.png"):
-        expect(png.with_suffix(".pdf").is_file(), f"{png.name} has no PDF")
+        expect(png.with_name(png.name[:-4] + ".pdf").is_file(), f"{png.name} has no PDF")
+    distinct_figures(out, res.stdout)
     if mutants:
         km = json.loads(Path(mutants).read_text())
         killed = sum(bool(m["killed"]) for m in km["mutants"])
@@ -80,6 +171,7 @@ def main():
         text = (out / "mutants.html").read_text() if (out / "mutants.html").is_file() else ""
         expect(f"<b>{killed} of {len(km['mutants'])}</b> killed" in text, "mutants page does not count the kills")
 
+    bundle_checks(results, work, sweeps)
     if "--dirty" in args:  # results recorded as produced from a dirty tree are not bundled
         dirty = work / "dirty"
         shutil.copytree(results, dirty)

@@ -2,7 +2,7 @@
 # the commit and whether the source tree is dirty (tracked changes or untracked files that are
 # not ignored, under sph/, reference/, verification/ and CMakeLists.txt), as a C++ source file.
 # OUT is rewritten only when that changes, so an unchanged tree recompiles nothing.
-execute_process(COMMAND git rev-parse --short=12 HEAD WORKING_DIRECTORY ${SRC}
+execute_process(COMMAND git rev-parse HEAD WORKING_DIRECTORY ${SRC}
                 OUTPUT_VARIABLE commit OUTPUT_STRIP_TRAILING_WHITESPACE ERROR_QUIET RESULT_VARIABLE no_git)
 execute_process(COMMAND git status --porcelain --untracked-files=all -- sph reference verification CMakeLists.txt
                 WORKING_DIRECTORY ${SRC} OUTPUT_VARIABLE changes OUTPUT_STRIP_TRAILING_WHITESPACE ERROR_QUIET)

@@ -71,6 +71,7 @@ Result run_case(const Case& c, const Params& p) {
   r.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   r.case_name = c.name;
   r.params = p.to_json();
+  r.provenance = provenance();
   name_non_finite(r);
   return r;
 }

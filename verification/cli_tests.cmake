@@ -42,6 +42,12 @@ add_test(NAME sweep_parallel_matches_serial COMMAND bash -c
   "rm -rf par ser && $<TARGET_FILE:sphv> sweep interpolation --vary dim=1,2 --jobs 2 --out par >/dev/null && $<TARGET_FILE:sphv> sweep interpolation --vary dim=1,2 --jobs 1 --out ser >/dev/null && py=$(bash ${CMAKE_SOURCE_DIR}/scripts/find-python.sh) && $py ${CMAKE_SOURCE_DIR}/scripts/compare-sweeps.py par ser"
   WORKING_DIRECTORY ${CMAKE_BINARY_DIR})
 set_tests_properties(sweep_parallel_matches_serial PROPERTIES PASS_REGULAR_EXPRESSION "points identical")
+# Each point's provenance (threads, date) is its own, not that of the parent writing sweep.json:
+# the parent runs on more threads (--threads 5) than --jobs 2 gives a point (one each, or every
+# core for the longest one) on a machine of fewer than five cores.
+add_test(NAME sweep_keeps_point_provenance COMMAND bash -c
+  "rm -rf prov && $<TARGET_FILE:sphv> --threads 5 sweep interpolation --levels 16,32 --jobs 2 --out prov >/dev/null && py=$(bash ${CMAKE_SOURCE_DIR}/scripts/find-python.sh) && $py ${CMAKE_SOURCE_DIR}/verification/tests/sweep_provenance.py prov 5 ${CMAKE_SOURCE_DIR}"
+  WORKING_DIRECTORY ${CMAKE_BINARY_DIR})
 # Never stale: a point is reused only by the build (executable bytes, flags) that produced it.
 add_test(NAME sweep_never_reuses_another_build COMMAND bash ${CMAKE_SOURCE_DIR}/scripts/test-never-stale.sh $<TARGET_FILE:sphv> ${CMAKE_BINARY_DIR}/never_stale)
 find_program(MPIEXEC_BIN NAMES mpirun mpiexec)

@@ -127,7 +127,7 @@ nlohmann::json to_json(const Result& r) {
   return {{"case", r.case_name},       {"params", r.params},   {"n_particles", r.n_particles},
           {"wall_time_s", r.wall_time_s}, {"errors", errors},  {"functionals", functionals},
           {"verdict", r.verdict},      {"figures", figures},   {"extra", r.extra},
-          {"provenance", provenance()}};
+          {"provenance", r.provenance.is_null() ? provenance() : r.provenance}};
 }
 
 namespace {
@@ -154,6 +154,7 @@ Result result_from_json(const nlohmann::json& j) {
   r.functionals = named(j.at("functionals"));
   r.verdict = j.at("verdict");
   r.extra = j.at("extra");
+  if (j.contains("provenance")) r.provenance = j.at("provenance");
   for (const auto& f : j.at("figures")) {
     Figure fig{f.at("name"), f.at("title"), f.at("xlabel"), f.at("ylabel"), f.at("xscale"), f.at("yscale"), {}};
     for (const auto& s : f.at("series"))

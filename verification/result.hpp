@@ -44,6 +44,10 @@ struct Result {
   std::vector<Figure> figures;
   nlohmann::json extra = nlohmann::json::object();  // case-specific detail
   Table particles;                                  // empty when the case has none
+  // Where, when and with how many threads the point ran: taken when it ends (run_case) or is
+  // first written, and kept when the result is read back, so a sweep written later (by the
+  // parent of the point's process, on other threads) reports the point's own.
+  nlohmann::json provenance;
 };
 
 nlohmann::json provenance();
