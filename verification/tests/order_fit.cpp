@@ -1,6 +1,7 @@
-// The observed order's fit (verification/sweep.cpp, observed_order) against known answers: data
-// built with a known slope and known residuals, whose least-squares slope and standard error
-// follow in closed form. The standard error sets the width of every order band the report shows.
+// The observed order's fit and the grid convergence index (verification/sweep.cpp) against known
+// answers: data built with a known slope and known residuals, whose least-squares slope and
+// standard error follow in closed form (the standard error sets the width of every order band the
+// report shows), and a functional with a known limit, whose GCI follows in closed form.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -67,4 +68,29 @@ TEST_CASE("order fit: a general set of five points against the normal equations 
   CHECK(o.se == Approx(se).epsilon(1e-10));  // se is a difference of near sums: a few digits less
   // Below three points there is no residual to estimate the scatter from: se is not a number.
   CHECK(std::isnan(sphv::observed_order({16, 32}, {0.21, 0.062}).se));
+}
+
+// Roache's grid convergence index on a functional with a known limit: f(n) = A + C n^-p exactly.
+// Then f1 - f2 = C n1^-p (1 - r^p) on the finest pair (n1 = r n2), so |f1 - f2| / (r^p - 1) is
+// |f1 - A|, the finest level's true error, and
+//   GCI = Fs |f1 - f2| / (|f1| (r^p - 1)) = Fs |f1 - A| / |f1|,
+// with p observed from three levels at a constant ratio (Fs = 1.25), or the claimed order with two
+// (Fs = 3; exact when the claim is p). The claimed order differs from p here, so a GCI that took it
+// in place of the observed order with three levels would not give this answer.
+TEST_CASE("grid convergence index of f = A + C n^-p equals Fs |f1 - A| / |f1| (known answer)", "[sweep]") {
+  const double A = 2.0, C = -0.7, p = 1.6;
+  auto f = [&](double n) { return A + C * std::pow(n, -p); };
+  const std::vector<double> n3 = {20, 40, 80}, f3 = {f(20), f(40), f(80)};
+  const auto g3 = sphv::grid_convergence_index(n3, f3, 2.0);
+  REQUIRE(g3);
+  const double true_rel = std::abs(f(80) - A) / std::abs(f(80));
+  INFO("three levels: order " << g3->order << ", Fs " << g3->safety << ", GCI " << g3->gci << "; known " << 1.25 * true_rel);
+  CHECK(std::abs(g3->order - p) <= 1e-9);  // logs of differences of O(1) values: round-off 1e-12
+  CHECK(g3->safety == 1.25);
+  CHECK(g3->gci == Approx(1.25 * true_rel).epsilon(1e-9));
+  const auto g2 = sphv::grid_convergence_index({40, 80}, {f(40), f(80)}, p);
+  REQUIRE(g2);
+  INFO("two levels, claimed order p: GCI " << g2->gci << "; known " << 3.0 * true_rel);
+  CHECK(g2->safety == 3.0);
+  CHECK(g2->gci == Approx(3.0 * true_rel).epsilon(1e-12));
 }
