@@ -242,8 +242,11 @@ TEST_CASE("hydro terms equal a direct sum of the chapter's (22)-(53) on a non-un
 // smoothing_length_iterate's contract on a gas whose mass per particle varies threefold, in an
 // open box (edge particles have few neighbours) and a periodic one: it converges, the returned rho
 // is the summation density (27) of the returned h, as a direct sum over all pairs gives it
-// (tolerance 1e-12: round-off of a few dozen terms), and h satisfies (50) for that rho to within
-// the iteration's tolerance (the last change of h was below tol; 2 tol leaves room for rounding).
+// (tolerance 1e-12: round-off of a few dozen terms), and h satisfies (50) for that rho to 0.1 %.
+// That bound is fixed, not the iteration's own tol: ten times the tolerance Phantom iterates h to
+// by default (tolh = 1e-4; Price et al. 2018, PASA 35, e031), a density that (50) and (27) agree
+// on to D x 0.1 % (rho ~ h^-D). Measured 1.4e-4 (open box) and 2.7e-4 (periodic) at the default
+// tol = 1e-3; a tol 30 times looser leaves 3.5e-3.
 // The 3D pair loops have a copy of their own for each path (AVX-512 too, sph/core/isa.hpp); the
 // test above checks the 2D copies against direct sums. Here the density (27) and the rates of the
 // bench's scene (ideal gas, (26), (42), viscosity) on a disordered 3D gas, on every path this CPU
@@ -316,7 +319,7 @@ TEST_CASE("(50) iterated: rho is the direct sum (27) of the returned h, and h fi
     }
     INFO((periodic ? "periodic" : "open") << " box: rho differs by " << worst_rho << ", h from (50) by " << worst_h);
     CHECK(worst_rho < 1e-12);
-    CHECK(worst_h < 2.0 * c.tol);
+    CHECK(worst_h < 1e-3);
   }
 }
 
