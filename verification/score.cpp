@@ -214,25 +214,42 @@ void complete_tube(Completion& k) {
   else k.record("x0", "the domain's middle", "default");
 }
 
-// n from the particle count, as the case counts it.
+// Whether the case accepts these settings.
+bool accepted(const Case& c, const std::vector<std::string>& settings) {
+  try {
+    c.parse(settings);
+    return true;
+  } catch (const InputError&) {
+    return false;
+  }
+}
+
+// n from the particle count, as the case counts it. A count below what the case's runs accept
+// (sedov n >= 8, noh's shock resolution, evrard n >= 100) leaves n at its default, saying why:
+// the scorers read n only for bin widths and titles.
 void complete_n(Completion& k, const Scorer& sc) {
   if (sc.n == Resolution::none) return;
   if (const auto given = setting(k.settings, "n")) return k.record("n", *given, "--set");
-  const double N = static_cast<double>(k.s.size());
+  std::string n, how;
   if (sc.n == Resolution::count) {
-    k.settings.push_back("n=" + std::to_string(k.s.size()));
-    return k.record("n", std::to_string(k.s.size()), "snapshot: its particle count N");
+    n = std::to_string(k.s.size());
+    how = "snapshot: its particle count N";
+  } else {
+    const long dim = has_param(k.c, "dim") ? Params(k.c.name, k.c.params, k.settings).integer("dim") : k.s.dim;
+    const auto box = k.s.stated.find("box");
+    const double side = box == k.s.stated.end() ? 1.0 : box->second.value[1] - box->second.value[0];
+    n = std::to_string(std::max(1L, std::lround(std::pow(double(k.s.size()), 1.0 / dim) / side)));
+    how = "snapshot: N^(1/" + std::to_string(dim) + ") / L = " + std::to_string(k.s.size()) + "^(1/" + std::to_string(dim) +
+          ") / " + shortest(side) + " particles per unit length (L: " +
+          (box == k.s.stated.end() ? std::string("1, the file states no box") : "the box's side along x, " + box->second.from) + ")";
   }
-  const long dim = has_param(k.c, "dim") ? Params(k.c.name, k.c.params, k.settings).integer("dim") : k.s.dim;
-  const auto box = k.s.stated.find("box");
-  const double side = box == k.s.stated.end() ? 1.0 : box->second.value[1] - box->second.value[0];
-  const long n = std::max(1L, std::lround(std::pow(N, 1.0 / dim) / side));
-  k.settings.push_back("n=" + std::to_string(n));
-  k.record("n", std::to_string(n),
-           "snapshot: N^(1/" + std::to_string(dim) + ") / L = " + std::to_string(k.s.size()) + "^(1/" + std::to_string(dim) +
-               ") / " + shortest(side) + " particles per unit length (L: " +
-               (box == k.s.stated.end() ? std::string("1, the file states no box") : "the box's side along x, " + box->second.from) +
-               ")");
+  auto with_n = k.settings;
+  with_n.push_back("n=" + n);
+  if (!accepted(k.c, with_n) && accepted(k.c, k.settings))
+    return k.record("n", Params(k.c.name, k.c.params, k.settings).text("n"),
+                    "default: the snapshot's n = " + n + " (" + how + ") is below what the case's runs accept");
+  k.settings = std::move(with_n);
+  k.record("n", n, how);
 }
 
 // p = (gamma - 1) rho u for every particle where the three are present, within their round-off:

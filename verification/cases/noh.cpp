@@ -39,7 +39,7 @@ Result run_dim(const Params& prm) {
   if (r.verdict != "stable") return r;
 
   noh::measure<D>(r, p.x, p.v, p.m, p.rho, p.u, out.t, m.gamma, n);
-  r.particles = extreme::particle_table(p);
+  r.particles = extreme::particle_table(p, m.gamma);
   return r;
 }
 
