@@ -121,7 +121,7 @@ void complete_time(Completion& k, const Scorer& sc) {
   const Snapshot& s = k.s;
   if (s.time) {
     const double t = *s.time;
-    k.take(sc.time_key, number(t), s.time_from.empty() ? "header time" : s.time_from, [&](const std::string& v) {
+    k.take(sc.time_key, shortest(t), s.time_from.empty() ? "header time" : s.time_from, [&](const std::string& v) {
       return std::abs(set_number(k.c, sc.time_key, v) - t) <= 1e-12 * std::max(1.0, std::abs(t));
     });
   } else if (setting(k.settings, sc.time_key)) {
@@ -154,7 +154,7 @@ void complete_dim(Completion& k) {
 void complete_gamma(Completion& k) {
   if (!has_param(k.c, "gamma")) return;
   const auto it = k.s.stated.find("gamma");
-  if (it == k.s.stated.end()) return k.set_or_default("gamma", "the case's", "the file states none");
+  if (it == k.s.stated.end()) return k.set_or_default("gamma", "", "the case's: the file states none");  // value filled in once parsed
   const Stated& g = it->second;
   k.take("gamma", shortest(g.value.at(0)), g.from,
          [&](const std::string& v) { return agrees(set_number(k.c, "gamma", v), g.value.at(0), g.round_off); });
@@ -211,7 +211,7 @@ void complete_tube(Completion& k) {
     k.set_or_default("ends", "open", "the file states no box: a window of an unbounded tube");
   }
   if (const auto x0 = setting(k.settings, "x0"); x0 && *x0 != "preset") k.record("x0", *x0, "--set");
-  else k.record("x0", "the domain's middle", "default");
+  else k.record("x0", "", "default: the domain's middle");  // value filled in once scored
 }
 
 // Whether the case accepts these settings.
@@ -253,19 +253,20 @@ void complete_n(Completion& k, const Scorer& sc) {
 }
 
 // p = (gamma - 1) rho u for every particle where the three are present, within their round-off:
-// the stored values' relative round-offs and the writer's own product (two roundings in its
-// precision), times 8 for the pow or division a code may take instead (SWIFT derives u and p from
-// its entropy). Measured on SWIFT's two float32 snapshots (tests/data) with their own gamma: the
-// largest relative residual is 1.8e-7, the bound 2.4e-6 (margin 13); gamma 1.4 against 5/3 is off
-// by 0.4 relative.
+// each value's relative round-off as stored, at least float32's (codes compute in single
+// precision and write doubles, or convert float32 files to text: the stored type does not tell),
+// and the writer's own product (two roundings), times 8 for the pow or division a code may take
+// instead (SWIFT derives u and p from its entropy). Measured on SWIFT's two float32 snapshots
+// (tests/data) with their own gamma: the largest relative residual is 1.8e-7, the bound 2.4e-6
+// (margin 13); gamma 1.4 against 5/3 is off by 0.4 relative.
 void check_equation_of_state(const Completion& k, const Params& p, const Scorer& sc) {
   const Snapshot& s = k.s;
   if (!sc.gamma || !s.has("p") || !s.has("rho") || !s.has("u")) return;
   const double gamma = sc.gamma(p);
   const auto &P = s.columns.at("p"), &rho = s.columns.at("rho"), &u = s.columns.at("u");
-  auto ro = [&](const std::string& c) { return s.round_off.count(c) ? s.round_off.at(c) : std::ldexp(1.0, -53); };
-  const double eps = std::max({ro("p"), ro("rho"), ro("u"), std::ldexp(1.0, -53)});
-  const double tol = 8.0 * (ro("p") + ro("rho") + ro("u") + 2.0 * eps);
+  const double single = std::ldexp(1.0, -24);
+  auto ro = [&](const std::string& c) { return std::max(single, s.round_off.count(c) ? s.round_off.at(c) : 0.0); };
+  const double tol = 8.0 * (ro("p") + ro("rho") + ro("u") + 2.0 * std::max({ro("p"), ro("rho"), ro("u")}));
   std::size_t worst = 0;
   double worst_rel = 0.0;
   std::vector<double> implied;
@@ -281,7 +282,7 @@ void check_equation_of_state(const Completion& k, const Params& p, const Scorer&
   const std::string from = k.values.contains("gamma") ? k.values["gamma"]["from"].get<std::string>() : "the case's";
   throw InputError(k.file() + ": p = (gamma - 1) rho u does not hold with the gamma in use, " + shortest(gamma) + " (" + from +
                    "): the data's p / (rho u) gives gamma " + (implied.empty() ? std::string("-") : shortest(implied[implied.size() / 2])) +
-                   " (particle " + std::to_string(worst) + " off by " + brief(worst_rel) + " relative, round-off " + brief(tol) +
+                   " (particle " + std::to_string(worst) + " off by " + brief(worst_rel) + " relative, bound " + brief(tol) +
                    "; --set gamma=G to score another gas)");
 }
 
@@ -301,6 +302,8 @@ Result score_snapshot(const Case& c, std::vector<std::string> settings, const Sn
   check_equation_of_state(k, p, sc);
   const auto t0 = std::chrono::steady_clock::now();
   Result r = sc.score(p, s);
+  if (k.values.contains("gamma") && k.values["gamma"]["value"] == "") k.values["gamma"]["value"] = shortest(sc.gamma(p));
+  if (k.values.contains("x0") && k.values["x0"]["value"] == "") k.values["x0"]["value"] = shortest(r.extra["x0"].get<double>());
   r.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   r.case_name = c.name;
   r.params = p.to_json();

@@ -193,6 +193,12 @@ Snapshot read_csv_snapshot(const std::filesystem::path& path) {
 void write_csv_snapshot(const Snapshot& s, const std::filesystem::path& path) {
   std::string out;
   if (s.time) out += "# time = " + [&] { std::ostringstream o; o.precision(17); o << *s.time; return o.str(); }() + "\n";
+  // What the source file stated of the set-up, as the comments the reader takes.
+  for (const auto& [key, st] : s.stated) {
+    std::string v;
+    for (double x : st.value) v += (v.empty() ? "" : ",") + shortest(x);
+    out += "# " + key + " = " + (key == "periodic" ? std::string(st.value.at(0) != 0.0 ? "yes" : "no") : v) + "\n";
+  }
   std::vector<const std::vector<double>*> cols;
   for (const auto& name : snapshot_names())
     if (s.has(name)) {

@@ -58,7 +58,7 @@ std::string canonical_column(const std::string& file_name);
 // (tests that feed thousands of generated files, where a fork costs more than the read).
 Snapshot read_snapshot(const std::filesystem::path& path, const std::string& format = "auto",
                        std::optional<long> step = std::nullopt, bool hdf5_in_child = true);
-// Writes the snapshot's columns (and its time) in the format, atomically.
+// Writes the snapshot's columns (and its time; CSV also what the file stated) in the format, atomically.
 void write_snapshot(const Snapshot& s, const std::filesystem::path& path, const std::string& format);
 
 // Path, size in bytes and SHA-256 of a file, for provenance.
