@@ -107,7 +107,7 @@ score_refuses(evrard_no_reference "evrard --set gamma=1.0001 zones=100" ${_sdir}
 set(_data ${CMAKE_SOURCE_DIR}/verification/tests/data)
 add_test(NAME score_swift_sod_from_file COMMAND sphv score sod --snapshot ${_data}/swift_sod1d_orig_t0.2.hdf5 --out ${_sdir}/swift_sod)
 set_tests_properties(score_swift_sod_from_file PROPERTIES PASS_REGULAR_EXPRESSION
-  "domain=0,2 \\(file: /Header BoxSize along x\\); ends=periodic \\(file: /Parameters InitialConditions:periodic\\); gamma=1.6666666269302368 \\(file: /HydroScheme Adiabatic index\\)(.|\n)*scored 900 of 900 particles(.|\n)*L1_rho=[1-9]\\.[0-9]+e-03(.|\n)*verdict: ok")
+  "domain=0,2 \\(file: /Header BoxSize along x\\). ends=periodic \\(file: /Parameters InitialConditions:periodic\\). gamma=1.6666666269302368 \\(file: /HydroScheme Adiabatic index\\)(.|\n)*scored 900 of 900 particles(.|\n)*L1_rho=[1-9]\\.[0-9]+e-03(.|\n)*verdict: ok")
 # Independent value (the data README): L1_rho 0.2617 with centre (0.5, 0.5, 0.5), gamma 5/3, E = 1, rho0 = 1.
 add_test(NAME score_swift_sedov_from_file COMMAND sphv score sedov --snapshot ${_data}/swift_sedov3d_lattice32_t0.05.hdf5 --out ${_sdir}/swift_sedov)
 set_tests_properties(score_swift_sedov_from_file PROPERTIES PASS_REGULAR_EXPRESSION
@@ -125,7 +125,7 @@ set_tests_properties(score_sphexa_from_file PROPERTIES PASS_REGULAR_EXPRESSION
 file(WRITE ${_sdir}/tube_comments.csv "# time = 0.01\n# gamma = 1.6666666666666667\n# box = 0,2\n# periodic = yes\nx,vx,m,rho,u\n0.5,0,1,1,1.5\n1.5,0,1,0.125,1.2\n")
 add_test(NAME score_csv_comments COMMAND sphv score sod --snapshot ${_sdir}/tube_comments.csv --out ${_sdir}/tube_comments)
 set_tests_properties(score_csv_comments PROPERTIES PASS_REGULAR_EXPRESSION
-  "domain=0,2 \\(file: # box comment \\(line 3\\) along x\\); ends=periodic \\(file: # periodic comment \\(line 4\\)\\); gamma=1.6666666666666667 \\(file: # gamma comment \\(line 2\\)\\)(.|\n)*scored 2 of 2(.|\n)*L1_rho=0.000000e\\+00(.|\n)*verdict: ok")
+  "domain=0,2 \\(file: # box comment \\(line 3\\) along x\\). ends=periodic \\(file: # periodic comment \\(line 4\\)\\). gamma=1.6666666666666667 \\(file: # gamma comment \\(line 2\\)\\)(.|\n)*scored 2 of 2(.|\n)*L1_rho=0.000000e\\+00(.|\n)*verdict: ok")
 
 # A --set that contradicts the file is refused (unless --force), naming the file's statement.
 score_refuses(contradicts_gamma "sod --set gamma=1.4" ${_data}/swift_sod1d_orig_t0.2.hdf5)
