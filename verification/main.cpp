@@ -250,7 +250,8 @@ void add_gravity_command(CLI::App& app) {
   g->callback([o] { gravity_command(*o); });
 }
 
-void add_score_command(CLI::App& app) {
+// status: set to score_command's exit status (1: a verdict other than "ok").
+void add_score_command(CLI::App& app, int& status) {
   auto o = std::make_shared<ScoreOptions>();
   auto* cmd = app.add_subcommand("score", "score a snapshot of any SPH code against a case's exact reference");
   cmd->add_option("case", o->case_name, "case name (sod, sod2d, sod3d, sedov, noh, evrard, heat, gravity)")->required();
@@ -260,7 +261,8 @@ void add_score_command(CLI::App& app) {
   cmd->add_option("--step", o->step, "H5Part step k of /Step#k (default: the last)")->check(non_negative);
   cmd->add_option("--set", o->settings, "case parameter as key=value (repeatable; see 'sphv info CASE')")->take_all();
   cmd->add_option("--out", o->out, "output directory (default runs/CASE-score)");
-  cmd->callback([o] { score_command(*o); });
+  cmd->add_flag("--force", o->force, "score with --set values that contradict what the file states");
+  cmd->callback([o, &status] { status = score_command(*o); });
 }
 
 void add_ic_command(CLI::App& app) {
@@ -359,7 +361,8 @@ int run_main(int argc, char** argv) {
   baseline->require_subcommand(1);
   baseline_up->add_option("--cases", only, "only these cases")->delimiter(',');
   add_gravity_command(app);
-  add_score_command(app);
+  int score_status = 0;
+  add_score_command(app, score_status);
   add_ic_command(app);
   add_convert_command(app);
   add_bench_command(app);
@@ -378,6 +381,7 @@ int run_main(int argc, char** argv) {
       throw InputError(e.what());
     }
     app.parse(argc, argv);
+    if (score_status != 0) return score_status;
     if (!baselines.empty()) set_baseline_dir(baselines);
     const Tier tier = parse_tier(tier_name);
     opt.exe = fs::canonical("/proc/self/exe");

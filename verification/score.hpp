@@ -12,12 +12,18 @@
 
 namespace sphv {
 
+// How a case's resolution n follows from a snapshot (unless set): not at all, as particles per
+// unit length N^(1/dim) / L (L: the box's side along x, 1 where the file states no box), or as
+// the particle count N.
+enum class Resolution { none, per_length, count };
+
 // How one case scores a snapshot.
 struct Scorer {
   std::string time_key;                          // the case's time parameter ("" = none)
   std::function<Result(const Params&, const Snapshot&)> score;
   std::function<double(const Params&)> t_end;     // the time a run of these parameters ends at (may be empty)
-  bool n_per_side = false;  // n (unless set) from the particle count: N^(1/dim) particles per side
+  Resolution n = Resolution::none;
+  std::function<double(const Params&)> gamma;     // the adiabatic index in use (empty: the case has none)
 };
 
 // The scorer of a case, or an InputError listing the cases that have one.
@@ -25,11 +31,14 @@ const Scorer& find_scorer(const std::string& case_name);
 bool has_scorer(const std::string& case_name);
 const std::map<std::string, Scorer>& scorers();  // defined in score_cases.cpp
 
-// Scores a snapshot: the time comes from the settings (the case's time parameter) or the
-// snapshot's header (one clear error when both exist and differ, or when neither does); a case
-// with a parameter `dim` takes it from the snapshot unless set. Result as `sphv run`'s, with
-// extra.snapshot (format, time, which column was taken for what) and the scoring time.
-Result score_snapshot(const Case& c, std::vector<std::string> settings, const Snapshot& s);
+// Scores a snapshot. What the file states is used unless set: the time (the case's time
+// parameter), the dimension, gamma, the box (the radial cases' centre: its middle; the tubes'
+// domain, and ends from its periodicity) and the resolution n. A setting that contradicts the
+// file is refused unless force; so is a time with neither, a centre with fewer components than
+// the dimension, and p, rho, u that do not satisfy p = (gamma - 1) rho u with the gamma in use.
+// Result as `sphv run`'s, with extra.snapshot (format, columns, and each value with where it
+// came from: the file, --set or a default) and the scoring time.
+Result score_snapshot(const Case& c, std::vector<std::string> settings, const Snapshot& s, bool force = false);
 
 // result.json of a scored snapshot: the run's keys, provenance.snapshot = path, size, SHA-256.
 void write_score(const Result& r, const Snapshot& s, const std::filesystem::path& dir);
@@ -39,7 +48,9 @@ struct ScoreOptions {
   std::filesystem::path snapshot, out;
   std::vector<std::string> settings;
   long step = -1;  // H5Part step (-1: the last)
+  bool force = false;  // settings may contradict the file
 };
-void score_command(const ScoreOptions& o);
+// Scores and writes the result; returns the exit status: 0 for verdict "ok", 1 otherwise.
+int score_command(const ScoreOptions& o);
 
 }  // namespace sphv

@@ -98,3 +98,70 @@ score_refuses(evrard_units evrard ${_sdir}/evrard_mass2.csv)
 # gamma 1.0001: the 1D reference collapses onto its centre (zone 0 goes bad at t ~ 0.13 < 1.5).
 file(WRITE ${_sdir}/evrard_one.csv "# time = 1.5\nx,y,z,vx,vy,vz,m,rho,u\n0.1,0,0,0,0,0,1,1,1\n")
 score_refuses(evrard_no_reference "evrard --set gamma=1.0001 zones=100" ${_sdir}/evrard_one.csv)
+
+# What another code's file states is used with no --set (issue 44): SWIFT's shipped Sod tube
+# (periodic [0, 2], interfaces at x = 1 and at the wrap, gamma 5/3 as float32) scores all 900
+# particles; SWIFT's Sedov blast takes its centre from the box and n from the lattice. Sod's
+# L1_rho must lie in [1e-3, 1e-2): measured 3.3e-3; sphv's own 1D tube at n = 800 has 4.0e-3
+# (sod.cpp's catalogue); scored as an open tube (the wrap's interface ignored) it is 8.3e-2.
+set(_data ${CMAKE_SOURCE_DIR}/verification/tests/data)
+add_test(NAME score_swift_sod_from_file COMMAND sphv score sod --snapshot ${_data}/swift_sod1d_orig_t0.2.hdf5 --out ${_sdir}/swift_sod)
+set_tests_properties(score_swift_sod_from_file PROPERTIES PASS_REGULAR_EXPRESSION
+  "domain=0,2 \\(file: /Header BoxSize along x\\). ends=periodic \\(file: /Parameters InitialConditions:periodic\\). gamma=1.6666666269302368 \\(file: /HydroScheme Adiabatic index\\)(.|\n)*scored 900 of 900 particles(.|\n)*L1_rho=[1-9]\\.[0-9]+e-03(.|\n)*verdict: ok")
+# Independent value (the data README): L1_rho 0.2617 with centre (0.5, 0.5, 0.5), gamma 5/3, E = 1, rho0 = 1.
+add_test(NAME score_swift_sedov_from_file COMMAND sphv score sedov --snapshot ${_data}/swift_sedov3d_lattice32_t0.05.hdf5 --out ${_sdir}/swift_sedov)
+set_tests_properties(score_swift_sedov_from_file PROPERTIES PASS_REGULAR_EXPRESSION
+  "centre=0.5,0.5,0.5 \\(file: the middle of its box \\(/Header BoxSize\\)\\)(.|\n)*n=32 \\(snapshot: N\\^\\(1/3\\)(.|\n)*L1_rho=2\\.61(6[5-9]|7[0-4])[0-9]*e-01(.|\n)*verdict: ok")
+add_test(NAME score_swift_sedov_bin_width COMMAND bash -c
+  "$<TARGET_FILE:sphv> score sedov --snapshot ${_data}/swift_sedov3d_lattice32_t0.05.hdf5 --out swift_sedov_bw > /dev/null && grep -q '\"bin_width\": 0.015625' swift_sedov_bw/result.json && grep -q '\"n\": 32' swift_sedov_bw/result.json && echo PASS"
+  WORKING_DIRECTORY ${_sdir})
+set_tests_properties(score_swift_sedov_bin_width PROPERTIES PASS_REGULAR_EXPRESSION "PASS")
+# SPH-EXA's H5Part: the centre from its step's box [-0.5, 0.5]^3, gamma from the step.
+add_test(NAME score_sphexa_from_file COMMAND sphv score sedov --snapshot ${_data}/sphexa-sedov-n12.h5 --out ${_sdir}/sphexa_file)
+set_tests_properties(score_sphexa_from_file PROPERTIES PASS_REGULAR_EXPRESSION
+  "centre=0,0,0 \\(file: the middle of its box \\(/Step#1 box\\)\\)(.|\n)*gamma=1.6666666666666667 \\(file: /Step#1 gamma\\)(.|\n)*n=12 \\(snapshot")
+# CSV comments state gamma, box and periodicity: a periodic tube [0, 2] at t = 0.01, one
+# particle of each undisturbed state (errors 0).
+file(WRITE ${_sdir}/tube_comments.csv "# time = 0.01\n# gamma = 1.6666666666666667\n# box = 0,2\n# periodic = yes\nx,vx,m,rho,u\n0.5,0,1,1,1.5\n1.5,0,1,0.125,1.2\n")
+add_test(NAME score_csv_comments COMMAND sphv score sod --snapshot ${_sdir}/tube_comments.csv --out ${_sdir}/tube_comments)
+set_tests_properties(score_csv_comments PROPERTIES PASS_REGULAR_EXPRESSION
+  "domain=0,2 \\(file: # box comment \\(line 3\\) along x\\). ends=periodic \\(file: # periodic comment \\(line 4\\)\\). gamma=1.6666666666666667 \\(file: # gamma comment \\(line 2\\)\\)(.|\n)*scored 2 of 2(.|\n)*L1_rho=0.000000e\\+00(.|\n)*verdict: ok")
+
+# A --set that contradicts the file is refused (unless --force), naming the file's statement.
+score_refuses(contradicts_gamma "sod --set gamma=1.4" ${_data}/swift_sod1d_orig_t0.2.hdf5)
+score_refuses(contradicts_domain "sod --set domain=0,1" ${_data}/swift_sod1d_orig_t0.2.hdf5)
+score_refuses(contradicts_ends "sod --set ends=open" ${_data}/swift_sod1d_orig_t0.2.hdf5)
+score_refuses(contradicts_time "sod --set t_end=0.25" ${_data}/swift_sod1d_orig_t0.2.hdf5)
+score_refuses(centre_outside_box "sedov --set centre=2,2,2" ${_data}/swift_sedov3d_lattice32_t0.05.hdf5)
+# A centre with fewer components than the dimension.
+score_refuses(centre_too_short "sedov --set centre=0.5" ${_data}/swift_sedov3d_lattice32_t0.05.hdf5)
+# Forced to gamma 1.4, the file's p, rho and u refuse it: both gammas named.
+score_refuses(equation_of_state "sod --set gamma=1.4 --force" ${_data}/swift_sod1d_orig_t0.2.hdf5)
+set_tests_properties(score_refuses_equation_of_state PROPERTIES PASS_REGULAR_EXPRESSION "gamma in use, 1.4 (.|\n)*gives gamma 1.66666(.|\n)*PASS")
+file(WRITE ${_sdir}/eos_no_gamma.csv "# time = 0.1\nx,vx,m,rho,u,p\n0.1,0,1,1,1.5,1\n0.9,0,1,0.125,1.2,0.1\n")
+score_refuses(equation_of_state_preset sod ${_sdir}/eos_no_gamma.csv)
+# Past the time its exact solution holds: the periodic tube's two interfaces' waves meet.
+score_refuses(periodic_waves_meet "sod --set t_end=0.4 --force" ${_data}/swift_sod1d_orig_t0.2.hdf5)
+set_tests_properties(score_refuses_periodic_waves_meet PROPERTIES PASS_REGULAR_EXPRESSION "waves from x0 and from the periodic wrap meet(.|\n)*PASS")
+file(WRITE ${_sdir}/tube_nowhere.csv "# time = 0.1\nx,vx,m,rho,u\n5,0,1,1,2.5\n")
+score_refuses(tube_no_particle_in_domain sod ${_sdir}/tube_nowhere.csv)
+
+# Never "ok" on a window that misses the data: the verdict says so, exit 1, the result written.
+function(score_fails name args file verdict)
+  add_test(NAME score_fails_${name} COMMAND bash -c
+    "rm -rf out_${name}; $<TARGET_FILE:sphv> score ${args} --snapshot ${file} --out out_${name}; s=$?; test $s -eq 1 && test -s out_${name}/result.json && echo PASS"
+    WORKING_DIRECTORY ${_sdir})
+  set_tests_properties(score_fails_${name} PROPERTIES PASS_REGULAR_EXPRESSION "verdict: ${verdict}(.|\n)*PASS")
+endfunction()
+file(WRITE ${_sdir}/tube_closed_outside.csv "# time = 0.01\n# box = 0,1\n# periodic = no\nx,vx,m,rho,u\n0.25,0,1,1,2.5\n0.75,0,1,0.125,2\n1.5,0,1,0.125,2\n")
+score_fails(tube_particle_outside sod ${_sdir}/tube_closed_outside.csv "1 of 3 particles outside the domain \\[0, 1\\], closed")
+file(WRITE ${_sdir}/noh_uniform.csv "# time = 0.6\nx,vx,m,rho,u\n-0.5,1,1,1,0\n-0.25,1,1,1,0\n0.25,-1,1,1,0\n0.5,-1,1,1,0\n")
+score_fails(noh_no_front noh ${_sdir}/noh_uniform.csv "no shock front")
+file(WRITE ${_sdir}/sedov_far.csv "# time = 0.05\nx,y,vx,vy,m,rho\n0.9,0.9,0,0,1,1\n0.95,0.9,0,0,1,1\n")
+score_fails(sedov_empty_ball sedov ${_sdir}/sedov_far.csv "no particle within 1.2 R")
+# sphv convert keeps what the file states (CSV comments): SWIFT's Sod as CSV scores to the same
+# errors, digit for digit.
+add_test(NAME score_swift_sod_via_csv COMMAND bash -c
+  "$<TARGET_FILE:sphv> convert --input ${_data}/swift_sod1d_orig_t0.2.hdf5 --out swift_sod.csv --format csv > /dev/null && $<TARGET_FILE:sphv> score sod --snapshot swift_sod.csv --out via_csv > via_csv.txt && $<TARGET_FILE:sphv> score sod --snapshot ${_data}/swift_sod1d_orig_t0.2.hdf5 --out via_hdf5 > via_hdf5.txt && grep -q 'ends=periodic (file: # periodic comment' via_csv.txt && test \"$(grep '^sod,' via_csv.txt | sed 's/; written.*//')\" = \"$(grep '^sod,' via_hdf5.txt | sed 's/; written.*//')\" && echo PASS"
+  WORKING_DIRECTORY ${_sdir})
+set_tests_properties(score_swift_sod_via_csv PROPERTIES PASS_REGULAR_EXPRESSION "PASS")

@@ -141,7 +141,7 @@ Result run(const Params& prm) {
     if (r_comp[i] > 0.0) pts.x.push_back(r_comp[i]), pts.y.push_back(rho_comp[i]);
   fp.series = {pts, {"1D Lagrangian", ref.r_profile, ref.rho_profile, "line"}};
   r.figures.push_back(fp);
-  r.particles = extreme::particle_table(p);
+  r.particles = extreme::particle_table(p, m.gamma);
   return r;
 }
 

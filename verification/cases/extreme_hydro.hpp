@@ -152,9 +152,11 @@ std::vector<double> radii(const sph::Particles<D>& p) {
   return r;
 }
 
-// particles.csv columns.
+// particles.csv columns. p is the written state's, (gamma - 1) rho u: the particles' own p is
+// from the last force evaluation, before the last kick of u (up to 1 % apart at Noh's shock),
+// and a snapshot whose p, rho and u disagree is refused by sphv score.
 template <int D>
-Table particle_table(const sph::Particles<D>& p) {
+Table particle_table(const sph::Particles<D>& p, double gamma) {
   Table t;
   const char* axes[] = {"x", "y", "z"};
   const char* vel[] = {"vx", "vy", "vz"};
@@ -170,7 +172,9 @@ Table particle_table(const sph::Particles<D>& p) {
   }
   t.add("m", p.m);
   t.add("rho", p.rho);
-  t.add("p", p.p);
+  std::vector<double> pressure(p.size());
+  for (std::size_t i = 0; i < p.size(); ++i) pressure[i] = (gamma - 1.0) * p.rho[i] * p.u[i];
+  t.add("p", pressure);
   t.add("u", p.u);
   t.add("h", p.h);
   return t;

@@ -59,7 +59,7 @@ Result run_dim(const Params& prm) {
 
   noh::measure<D>(r, p.x, p.v, p.m, p.rho, p.u, out.t, m.gamma, n);
   if constexpr (D == 1) r.extra["rho_post_lattice_sums"] = lattice_plateau(m.hfact, m.gamma);
-  r.particles = extreme::particle_table(p);
+  r.particles = extreme::particle_table(p, m.gamma);
   return r;
 }
 

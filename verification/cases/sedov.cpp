@@ -60,7 +60,7 @@ Result run_dim(const Params& prm) {
   sedov::measure<D>(r, p.x, p.v, p.m, p.rho, n, E, rho0, out.t, exact);
   r.extra["energy_drift"] = (E1 - E0) / E0;
   r.extra["kinetic_fraction"] = kinetic / E1;
-  r.particles = extreme::particle_table(p);
+  r.particles = extreme::particle_table(p, m.gamma);
   return r;
 }
 

@@ -44,19 +44,24 @@ void measure(Result& r, const std::vector<sph::Vec<D>>& x, const std::vector<sph
   // jump over a few h; the half-rise point of a symmetrically smoothed jump is the jump, while the
   // smoothed peak trails it by about half a kernel width.
   const extreme::Profile prof = extreme::radial_profile(rad, rho, 0.5, 2 * n);
+  // No particle within 0.5 of the centre (a scored snapshot's centre off its blast): no profile.
   const auto peak = std::max_element(prof.mean.begin(), prof.mean.end()) - prof.mean.begin();
-  const double R_front = radial::falling_through(prof, 0.5 * (rho0 + prof.mean[peak]), prof.r[peak], prof.r[peak]);
+  const double rho_peak = prof.mean.empty() ? 0.0 : prof.mean[peak], r_peak = prof.r.empty() ? 0.0 : prof.r[peak];
+  const double fall = radial::falling_through(prof, 0.5 * (rho0 + rho_peak), r_peak, -1.0);
+  const double R_front = fall < 0.0 ? r_peak : fall;  // no fall: the peak bin (front_found false)
   // L1 density error over the ball r < 1.2 R (shocked gas and some ambient gas), per unit volume
   // of the ball: sum of particle volumes m / rho times |rho - rho_exact|, over the ball's volume.
   const double ball = (D == 2 ? M_PI : 4.0 / 3.0 * M_PI) * std::pow(1.2 * R, D);
-  double l1 = 0.0;
+  double l1 = 0.0, in_ball = 0.0;
   for (std::size_t i = 0; i < x.size(); ++i)
-    if (rad[i] < 1.2 * R) l1 += m[i] / rho[i] * std::abs(rho[i] - exact.density(rad[i], E, rho0, t));
+    if (rad[i] < 1.2 * R) l1 += m[i] / rho[i] * std::abs(rho[i] - exact.density(rad[i], E, rho0, t)), ++in_ball;
   r.errors = {{"shock_radius", std::abs(R_front - R) / R}, {"L1_rho", l1 / ball / rho0}};
-  r.functionals = {{"R_front", R_front}, {"rho_peak", prof.mean[peak]}};
+  r.functionals = {{"R_front", R_front}, {"rho_peak", rho_peak}};
   r.extra["R_front"] = R_front;
-  r.extra["R_peak"] = prof.r[peak];
-  r.extra["rho_peak_binned"] = prof.mean[peak];
+  r.extra["front_found"] = fall >= 0.0;
+  r.extra["ball_particles"] = in_ball;
+  r.extra["R_peak"] = r_peak;
+  r.extra["rho_peak_binned"] = rho_peak;
   r.extra["rho_peak_exact"] = exact.g(1.0) * rho0;
   r.extra["bin_width"] = 0.5 * dx;
 

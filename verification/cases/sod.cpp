@@ -42,19 +42,34 @@ double state_value(const Params& p, const std::string& key, double preset_value)
   return v;
 }
 
-// The problem from the preset and any overrides, with one clear line for bad input.
+// The domain "x_lo,x_hi" (two finite numbers, x_lo < x_hi).
+std::pair<double, double> domain(const Params& p) {
+  const std::string& s = p.text("domain");
+  const auto comma = s.find(',');
+  double lo = 0.0, hi = 0.0;
+  if (comma == std::string::npos || !parse_finite(std::string_view(s).substr(0, comma), lo) ||
+      !parse_finite(std::string_view(s).substr(comma + 1), hi) || !(lo < hi))
+    throw InputError("parameter domain: '" + s + "' is not x_lo,x_hi (two finite numbers, x_lo < x_hi)");
+  return {lo, hi};
+}
+
+// The problem from the preset and any overrides, with one clear line for bad input. The
+// interface x0 defaults to the domain's middle (Toro's 0.5 on [0, 1]).
 TubeProblem problem(const Params& p) {
   const Preset& ps = presets.at(p.text("preset"));
+  const auto [lo, hi] = domain(p);
   TubeProblem pr{{state_value(p, "rho_l", ps.l.rho), state_value(p, "v_l", ps.l.u), state_value(p, "p_l", ps.l.p)},
                  {state_value(p, "rho_r", ps.r.rho), state_value(p, "v_r", ps.r.u), state_value(p, "p_r", ps.r.p)},
-                 state_value(p, "gamma", 1.4), state_value(p, "x0", 0.5), state_value(p, "t_end", ps.t_end)};
+                 state_value(p, "gamma", 1.4), state_value(p, "x0", 0.5 * (lo + hi)), state_value(p, "t_end", ps.t_end),
+                 lo, hi, p.text("ends")};
   if (!(pr.gamma > 1.0)) throw InputError("gamma must be > 1, got " + p.text("gamma"));
   if (!(pr.left.rho > 0.0 && pr.right.rho > 0.0)) throw InputError("densities rho_l, rho_r must be > 0");
   if (!(pr.left.p > 0.0 && pr.right.p > 0.0)) throw InputError("pressures p_l, p_r must be > 0");
-  if (!(pr.x0 > 0.0 && pr.x0 < 1.0)) throw InputError("x0 must lie inside the tube (0, 1), got " + p.text("x0"));
+  if (!(pr.x0 > lo && pr.x0 < hi))
+    throw InputError("x0 must lie inside the tube's domain (" + shortest(lo) + ", " + shortest(hi) + "), got " + p.text("x0"));
   if (!(pr.t_end > 0.0)) throw InputError("t_end must be > 0, got " + p.text("t_end"));
   try {
-    reference::RiemannSolution(pr.left, pr.right, pr.gamma, pr.x0);
+    static_cast<void>(TubeExact{pr});
   } catch (const reference::RiemannError& e) {
     throw InputError(e.what());
   }
@@ -103,15 +118,18 @@ Figure profile(const std::string& field, const std::string& label, const TubeRun
 template <int D>
 Result run(const Params& p) {
   const TubeProblem pr = problem(p);
+  if (pr.x_lo != 0.0 || pr.x_hi != 1.0 || pr.ends != "open")
+    throw InputError("domain and ends describe a scored snapshot (sphv score); sphv run's tube is [0, 1], open");
   const long n = p.integer("n");
   const TubeRun run = simulate_tube<D>(pr, method(p), n);
-  const reference::RiemannSolution exact(pr.left, pr.right, pr.gamma, pr.x0);
+  const TubeExact tube(pr);
+  const reference::RiemannSolution& exact = tube.at_x0();
   Result r;
   r.n_particles = run.x.size();
   r.verdict = run.outcome.verdict;
   if (r.verdict == "ok" && p.text("preset") != "sod") r.verdict = "stable";
   if (r.verdict == "ok" || r.verdict == "stable") {
-    r.errors = tube_l1_errors(run.x, run.v, run.rho, run.p, run.u, run.m, run.active, exact, pr.t_end);
+    r.errors = tube_l1_errors(run.x, run.v, run.rho, run.p, run.u, run.m, run.active, tube, pr.t_end);
     r.figures = {profile("rho", "density rho", run, run.rho, exact, pr.t_end, n, D),
                  profile("v", "velocity v_x", run, run.v, exact, pr.t_end, n, D),
                  profile("p", "pressure p", run, run.p, exact, pr.t_end, n, D),
@@ -149,7 +167,13 @@ std::vector<ParamSpec> params(long n_default, double hfact_default) {
                    {"sod", "toro2", "toro3", "toro4", "toro5"}),
   };
   for (const char* k : state_keys)
-    ps.push_back({k, ParamSpec::Kind::Text, "preset", "number overriding the preset (default: the preset's)"});
+    ps.push_back({k, ParamSpec::Kind::Text, "preset", "number overriding the preset (default: the preset's; x0: the domain's middle)"});
+  ps.push_back({"domain", ParamSpec::Kind::Text, "0,1",
+                "x_lo,x_hi of the tube in a scored snapshot (sphv score: default the file's box; sphv run's tube is [0, 1])"});
+  ps.push_back(choice_param("ends", "open",
+                            "the tube's ends in a scored snapshot: open (a window of an unbounded tube, particles outside "
+                            "not scored), periodic (a second interface at the wrap), closed (walls or free ends)",
+                            {"open", "periodic", "closed"}));
   auto add = [&](const std::vector<ParamSpec>& more) { ps.insert(ps.end(), more.begin(), more.end()); };
   add({choice_param("density", "summation", "density: summation (27) or continuity (29)/(33)",
                     {"summation", "continuity29", "continuity33"}),

@@ -9,10 +9,16 @@
 
 namespace sphv {
 
-// A Riemann problem on the tube [0, 1] (Toro's domain), ideal gas.
+// A Riemann problem at x0 on the tube [x_lo, x_hi] (sphv run: Toro's [0, 1]), ideal gas. The
+// ends (sphv score): "open" (the domain is a window of an unbounded tube: sphv run's layout, codes
+// with boundary layers held at the end states), "periodic" (a periodic box: a second interface at
+// its wrap x_lo = x_hi, the states the other way round, as SWIFT's Sod tube) or "closed" (walls or
+// free ends).
 struct TubeProblem {
   reference::GasState left, right;
   double gamma, x0, t_end;
+  double x_lo = 0.0, x_hi = 1.0;
+  std::string ends = "open";
 };
 
 // The method: every runtime choice of 9.2-9.4.2, dispatched once to a scene type.

@@ -1,9 +1,12 @@
 // CSV snapshots: a header row of column names (any spelling canonical_column knows; others are
-// ignored), comma- or whitespace-separated, comment lines beginning with '#'; a comment
-// "# time = T" (or "t: T") gives the time.
+// ignored), comma- or whitespace-separated, comment lines beginning with '#'. Comments of the
+// form "# key = value" (or "key: value") state the set-up: time (or t), gamma, box (x_lo, x_hi[,
+// y_lo, y_hi[, z_lo, z_hi]]) and periodic (yes/no, 1/0).
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <string_view>
 
@@ -45,21 +48,48 @@ bool parse_field(std::string_view t, double& v) {  // a number, '+' allowed in f
   return parse_number(t, v);
 }
 
-// "# time = 0.25", "# t: 0.25", "#time 0.25": the time, else nothing.
-std::optional<double> comment_time(std::string_view c) {
+// "# gamma = 1.4", "# t: 0.25", "#box 0,2": the key (lower case) and its value's text, else nothing.
+std::optional<std::pair<std::string, std::string_view>> comment_setting(std::string_view c) {
   std::size_t k = 1;
   while (k < c.size() && std::isspace(static_cast<unsigned char>(c[k]))) ++k;
   std::size_t e = k;
   while (e < c.size() && std::isalpha(static_cast<unsigned char>(c[e]))) ++e;
   std::string key(c.substr(k, e - k));
   for (auto& ch : key) ch = std::tolower(static_cast<unsigned char>(ch));
-  if (key != "time" && key != "t") return std::nullopt;
+  if (key != "time" && key != "t" && key != "gamma" && key != "box" && key != "periodic") return std::nullopt;
   while (e < c.size() && (std::isspace(static_cast<unsigned char>(c[e])) || c[e] == '=' || c[e] == ':')) ++e;
   std::size_t end = c.size();
   while (end > e && std::isspace(static_cast<unsigned char>(c[end - 1]))) --end;
-  double v;
-  if (!parse_field(c.substr(e, end - e), v)) return std::nullopt;
+  if (e == end) return std::nullopt;
+  return std::pair{key == "t" ? std::string("time") : key, c.substr(e, end - e)};
+}
+
+// Numbers separated by commas or blanks, or nothing when any is not a finite number.
+std::optional<std::vector<double>> numbers(std::string_view text) {
+  std::vector<std::string_view> f;
+  split(text, text.find(',') != std::string_view::npos, f);
+  std::vector<double> v;
+  for (auto t : f) {
+    double x;
+    if (!parse_field(t, x) || !std::isfinite(x)) return std::nullopt;
+    v.push_back(x);
+  }
   return v;
+}
+
+// The relative round-off of a number printed with this text: half a unit in its last
+// significant digit (at least a double's 2^-53); 0 for a zero, which tells nothing.
+double printed_round_off(std::string_view t) {
+  int digits = 0;
+  bool leading = true;
+  for (char ch : t) {
+    if (ch == 'e' || ch == 'E') break;
+    if (ch < '0' || ch > '9') continue;
+    if (leading && ch == '0') continue;
+    leading = false;
+    ++digits;
+  }
+  return digits == 0 ? 0.0 : std::max(0.5 * std::pow(10.0, 1 - digits), std::ldexp(1.0, -53));
 }
 
 }  // namespace
@@ -79,6 +109,7 @@ Snapshot read_csv_snapshot(const std::filesystem::path& path) {
   s.format = "csv";
   std::vector<std::string> names;                // per header field: sphv name, or "" (ignored)
   std::vector<std::vector<double>*> cols;        // per header field: its column, or null
+  double round_off = 0.0;                        // of the file's longest number (0: none seen)
   bool comma = false;
   std::vector<std::string_view> fields;
   std::size_t pos = 0;
@@ -89,7 +120,34 @@ Snapshot read_csv_snapshot(const std::filesystem::path& path) {
     const std::size_t first = line.find_first_not_of(" \t\r");
     if (first == std::string_view::npos) continue;
     if (line[first] == '#') {
-      if (auto t = comment_time(line.substr(first))) s.time = t;
+      const auto setting = comment_setting(line.substr(first));
+      if (!setting) continue;
+      const auto& [key, text] = *setting;
+      const std::string from = "# " + key + " comment (line " + std::to_string(row) + ")";
+      if (key == "periodic") {
+        const bool yes = text == "yes" || text == "1", no = text == "no" || text == "0";
+        if (!yes && !no) throw InputError(f + ":" + std::to_string(row) + ": periodic is '" + std::string(text) + "' (yes or no)");
+        s.stated["periodic"] = {{yes ? 1.0 : 0.0}, from};
+        continue;
+      }
+      const auto v = numbers(text);
+      if (key == "time") {
+        if (v && v->size() == 1) s.time = v->front(), s.time_from = from;  // other comments beginning "time" are prose
+        continue;
+      }
+      if (!v || v->empty()) throw InputError(f + ":" + std::to_string(row) + ": " + key + " is not a number ('" + std::string(text) + "')");
+      if (key == "gamma") {
+        if (v->size() != 1 || !(v->front() > 1.0))
+          throw InputError(f + ":" + std::to_string(row) + ": gamma must be one number > 1, got '" + std::string(text) + "'");
+        s.stated["gamma"] = {*v, from, 0.0};  // the number as written
+      } else {
+        bool pairs = v->size() % 2 == 0 && v->size() <= 6;
+        for (std::size_t d = 0; pairs && d < v->size(); d += 2) pairs = (*v)[d] < (*v)[d + 1];
+        if (!pairs)
+          throw InputError(f + ":" + std::to_string(row) + ": box must be x_lo, x_hi[, y_lo, y_hi[, z_lo, z_hi]] with lo < hi, got '" +
+                           std::string(text) + "'");
+        s.stated["box"] = {*v, from};
+      }
       continue;
     }
     auto where = [&] { return f + ":" + std::to_string(row); };
@@ -119,9 +177,14 @@ Snapshot read_csv_snapshot(const std::filesystem::path& path) {
         throw InputError(where() + ": " + (fields[k].empty() ? std::string("an empty field") : "'" + std::string(fields[k]) + "'") +
                          " in column " + s.taken_from.at(names[k]) + " is not a finite number");
       cols[k]->push_back(v);
+      // A writer prints every column with one format (trailing zeros dropped): the file's
+      // precision is that of its longest number.
+      const double r = printed_round_off(fields[k]);
+      if (r > 0.0 && (round_off == 0.0 || r < round_off)) round_off = r;
     }
   }
   if (names.empty()) throw InputError(f + ": empty (no header row)");
+  for (const auto& [c, v] : s.columns) s.round_off[c] = round_off;
   if (s.has("z") && !s.has("y")) throw InputError(f + ": has a z column but no y");
   s.dim = s.has("z") ? 3 : s.has("y") ? 2 : 1;
   return s;
@@ -130,6 +193,12 @@ Snapshot read_csv_snapshot(const std::filesystem::path& path) {
 void write_csv_snapshot(const Snapshot& s, const std::filesystem::path& path) {
   std::string out;
   if (s.time) out += "# time = " + [&] { std::ostringstream o; o.precision(17); o << *s.time; return o.str(); }() + "\n";
+  // What the source file stated of the set-up, as the comments the reader takes.
+  for (const auto& [key, st] : s.stated) {
+    std::string v;
+    for (double x : st.value) v += (v.empty() ? "" : ",") + shortest(x);
+    out += "# " + key + " = " + (key == "periodic" ? std::string(st.value.at(0) != 0.0 ? "yes" : "no") : v) + "\n";
+  }
   std::vector<const std::vector<double>*> cols;
   for (const auto& name : snapshot_names())
     if (s.has(name)) {

@@ -1,8 +1,12 @@
 // HDF5 snapshots in the H5Part layout SPH-EXA writes: groups /Step#k, each with one dataset per
 // field (x y z vx vy vz rho u p h m, ...) and an attribute `time`. The step read is the last one
 // unless asked for; the dimension is the root attribute `dim` when present, else the number of
-// coordinate datasets.
+// coordinate datasets. What the file states of the set-up, as SPH-EXA writes it: the adiabatic
+// index (the step's attribute `gamma`, else the root's), the box (the step's `box`: x_lo, x_hi,
+// y_lo, y_hi, z_lo, z_hi) and periodicity along x (the step's `boundaryType`, cstone's
+// BoundaryType: 0 open, 1 periodic, 2 fixed).
 #include <charconv>
+#include <cmath>
 #include <iterator>
 #include <map>
 #include <string_view>
@@ -51,14 +55,14 @@ Snapshot read_h5part_snapshot(const std::filesystem::path& path, std::optional<l
   Snapshot s;
   s.path = path;
   s.format = "h5part";
-  if (auto t = h5::read_attribute(g, "time", f)) s.time = t->at(0);
+  if (auto t = h5::read_attribute(g, "time", f)) s.time = t->at(0), s.time_from = "/" + group + " time";
   for (hsize_t i = 0; i < info.nlinks; ++i) {
     char name[256];
     if (H5Lget_name_by_idx(g, ".", H5_INDEX_NAME, H5_ITER_INC, i, name, sizeof name, H5P_DEFAULT) < 0) continue;
     const std::string c = canonical_column(name);
     if (c.empty() || s.has(c)) continue;
     std::vector<hsize_t> dims;
-    s.columns[c] = h5::read_dataset(g, name, f, dims);
+    s.columns[c] = h5::read_dataset(g, name, f, dims, &s.round_off[c]);
     if (dims.size() != 1) throw InputError(f + ": /" + group + "/" + name + " is not one value per particle");
     s.taken_from[c] = "/" + group + "/" + name;
   }
@@ -71,6 +75,31 @@ Snapshot read_h5part_snapshot(const std::filesystem::path& path, std::optional<l
                        std::to_string(s.dim) + " coordinate(s)");
     for (int a = dim; a < 3; ++a) s.columns.erase(std::string(1, "xyz"[a])), s.columns.erase("v" + std::string(1, "xyz"[a]));
     s.dim = dim;
+  }
+  for (const auto& [obj, where] : {std::pair<hid_t, std::string>{g, "/" + group}, {file, "the root"}}) {
+    double round_off = 0.0;
+    if (auto gamma = h5::read_attribute(obj, "gamma", f, &round_off)) {
+      if (!(gamma->at(0) > 1.0 && std::isfinite(gamma->at(0))))
+        throw InputError(f + ": attribute gamma of " + where + " is " + std::to_string(gamma->at(0)) + " (must be > 1)");
+      s.stated["gamma"] = {{gamma->at(0)}, where + " gamma", round_off};
+      break;
+    }
+  }
+  if (auto box = h5::read_attribute(g, "box", f)) {
+    if (box->size() < 2 * static_cast<std::size_t>(s.dim))
+      throw InputError(f + ": attribute box of /" + group + " has " + std::to_string(box->size()) + " values for " +
+                       std::to_string(s.dim) + " dimension(s) (x_lo, x_hi, y_lo, ...)");
+    box->resize(2 * s.dim);
+    for (int d = 0; d < s.dim; ++d)
+      if (!(std::isfinite((*box)[2 * d]) && std::isfinite((*box)[2 * d + 1]) && (*box)[2 * d] < (*box)[2 * d + 1]))
+        throw InputError(f + ": attribute box of /" + group + " is not lo < hi along axis " + std::string(1, "xyz"[d]));
+    s.stated["box"] = {*box, "/" + group + " box"};
+  }
+  if (auto b = h5::read_attribute(g, "boundaryType", f)) {
+    const double x = b->at(0);
+    if (x != 0.0 && x != 1.0 && x != 2.0)
+      throw InputError(f + ": attribute boundaryType of /" + group + " is " + std::to_string(x) + " along x (0, 1 or 2)");
+    s.stated["periodic"] = {{x == 1.0 ? 1.0 : 0.0}, "/" + group + " boundaryType[0]"};
   }
   return s;
 }

@@ -4,6 +4,7 @@
 // written through a temporary name and a rename.
 #include <hdf5.h>
 
+#include <cmath>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -59,13 +60,23 @@ inline void check_numeric_type(hid_t type, const std::string& what, const std::s
   if (!ok) throw InputError(file + ": " + what + " is not stored as plain integers or floating-point numbers");
 }
 
-// A whole dataset as doubles, with its dimensions.
+// The relative round-off of a value stored as type (checked numeric): half a unit in the last
+// place of a float's mantissa (2^-24 for float32, 2^-53 for float64); integers are exact.
+inline double round_off_of(hid_t type) {
+  if (H5Tget_class(type) != H5T_FLOAT) return 0.0;
+  size_t spos = 0, epos = 0, esize = 0, mpos = 0, msize = 0;
+  H5Tget_fields(type, &spos, &epos, &esize, &mpos, &msize);
+  return std::ldexp(1.0, -static_cast<int>(msize) - 1);
+}
+
+// A whole dataset as doubles, with its dimensions (and the round-off of its stored type).
 inline std::vector<double> read_dataset(hid_t loc, const std::string& name, const std::string& file,
-                                        std::vector<hsize_t>& dims) {
+                                        std::vector<hsize_t>& dims, double* round_off = nullptr) {
   const Handle ds(H5Dopen2(loc, name.c_str(), H5P_DEFAULT), H5Dclose);
   if (!ds.ok()) throw InputError(file + ": cannot open dataset " + name);
   const Handle type(H5Dget_type(ds), H5Tclose);
   check_numeric_type(type, "dataset " + name, file);
+  if (round_off) *round_off = round_off_of(type);
   const Handle space(H5Dget_space(ds), H5Sclose);
   const int rank = H5Sget_simple_extent_ndims(space);
   if (rank < 1 || rank > 2) throw InputError(file + ": dataset " + name + " has rank " + std::to_string(rank) + " (expected 1 or 2)");
@@ -90,19 +101,38 @@ inline std::vector<double> read_dataset(hid_t loc, const std::string& name, cons
   return v;
 }
 
-// A numeric attribute's values, or nothing when it is absent.
-inline std::optional<std::vector<double>> read_attribute(hid_t obj, const std::string& name, const std::string& file) {
+// A numeric attribute's values (and the round-off of its stored type), or nothing when it is absent.
+inline std::optional<std::vector<double>> read_attribute(hid_t obj, const std::string& name, const std::string& file,
+                                                         double* round_off = nullptr) {
   if (H5Aexists(obj, name.c_str()) <= 0) return std::nullopt;
   const Handle a(H5Aopen(obj, name.c_str(), H5P_DEFAULT), H5Aclose);
   if (!a.ok()) throw InputError(file + ": cannot read attribute " + name);
   const Handle type(H5Aget_type(a), H5Tclose);
   check_numeric_type(type, "attribute " + name, file);
+  if (round_off) *round_off = round_off_of(type);
   const Handle space(H5Aget_space(a), H5Sclose);
   const hssize_t n = H5Sget_simple_extent_npoints(space);
   std::vector<double> v(n > 0 ? n : 0);
   if (!a.ok() || n <= 0 || H5Aread(a, H5T_NATIVE_DOUBLE, v.data()) < 0)
     throw InputError(file + ": cannot read attribute " + name + " as numbers");
   return v;
+}
+
+// A fixed-length string attribute's text (SWIFT's run-time parameters are such strings), or
+// nothing when it is absent or not a fixed-length string.
+inline std::optional<std::string> read_text_attribute(hid_t obj, const std::string& name) {
+  if (H5Aexists(obj, name.c_str()) <= 0) return std::nullopt;
+  const Handle a(H5Aopen(obj, name.c_str(), H5P_DEFAULT), H5Aclose);
+  if (!a.ok()) return std::nullopt;
+  const Handle type(H5Aget_type(a), H5Tclose);
+  const Handle space(H5Aget_space(a), H5Sclose);
+  const std::size_t size = H5Tget_size(type);
+  if (H5Tget_class(type) != H5T_STRING || H5Tis_variable_str(type) != 0 || size == 0 || size > 4096 ||
+      H5Sget_simple_extent_npoints(space) != 1)
+    return std::nullopt;
+  std::string text(size, '\0');
+  if (H5Aread(a, type, text.data()) < 0) return std::nullopt;
+  return text.substr(0, text.find('\0'));
 }
 
 // A numeric attribute that must hold a whole number in [lo, hi], or nothing when it is absent.

@@ -30,9 +30,14 @@ bool write_all(int fd, const void* data, std::size_t n) {
 }
 
 // The child's message: 'E' and the error text, or 'S' and the snapshot (JSON header with the
-// column names and lengths, then the time and each column's doubles as raw bytes).
+// column names and lengths and what the file states, which the readers check finite, then the
+// time and each column's doubles as raw bytes).
 std::string encode(const Snapshot& s) {
-  nlohmann::json head = {{"format", s.format}, {"dim", s.dim}, {"taken_from", s.taken_from}};
+  nlohmann::json head = {{"format", s.format}, {"dim", s.dim}, {"taken_from", s.taken_from}, {"time_from", s.time_from},
+                         {"round_off", s.round_off}};
+  nlohmann::json stated = nlohmann::json::object();
+  for (const auto& [k, v] : s.stated) stated[k] = {{"value", v.value}, {"from", v.from}, {"round_off", v.round_off}};
+  head["stated"] = stated;
   head["has_time"] = s.time.has_value();  // the time itself goes raw: it may be NaN (refused later)
   nlohmann::json cols = nlohmann::json::array();
   for (const auto& [name, c] : s.columns) cols.push_back({name, c.size()});
@@ -53,6 +58,10 @@ Snapshot decode(const std::string& msg, const std::filesystem::path& path) {
   s.format = head["format"].get<std::string>();
   s.dim = head["dim"].get<int>();
   s.taken_from = head["taken_from"].get<std::map<std::string, std::string>>();
+  s.time_from = head["time_from"].get<std::string>();
+  s.round_off = head["round_off"].get<std::map<std::string, double>>();
+  for (const auto& [k, v] : head["stated"].items())
+    s.stated[k] = {v["value"].get<std::vector<double>>(), v["from"].get<std::string>(), v["round_off"].get<double>()};
   std::size_t at = nl + 1 + hlen;
   if (head["has_time"].get<bool>()) {
     double t;

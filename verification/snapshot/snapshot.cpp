@@ -70,8 +70,15 @@ bool is_hdf5(const std::filesystem::path& path) {
   return f.gcount() == 8 && std::string(sig, 8) == "\x89HDF\r\n\x1a\n";
 }
 
-void check(const Snapshot& s) {
+void check(Snapshot& s) {
   const std::string f = s.path.string();
+  if (const auto it = s.stated.find("box"); it != s.stated.end()) {
+    auto& box = it->second.value;
+    if (box.size() < 2 * static_cast<std::size_t>(s.dim))
+      throw InputError(f + ": its box (" + it->second.from + ") has " + std::to_string(box.size() / 2) +
+                       " axis(es) for " + std::to_string(s.dim) + " dimension(s)");
+    box.resize(2 * s.dim);
+  }
   if (!s.has("x")) throw InputError(f + ": no x coordinate (found: " + s.describe() + ")");
   if (s.size() == 0) throw InputError(f + ": no particles");
   if (s.time && !std::isfinite(*s.time)) throw InputError(f + ": the time in its header is not finite");

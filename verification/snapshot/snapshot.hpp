@@ -15,6 +15,13 @@
 
 namespace sphv {
 
+// A value the file states about the set-up besides its columns, and where it says it.
+struct Stated {
+  std::vector<double> value;
+  std::string from;       // "/HydroScheme Adiabatic index", "# gamma comment", ...
+  double round_off = 0.0;  // relative round-off of the value as stored (float32: 2^-24)
+};
+
 struct Snapshot {
   std::filesystem::path path;
   std::string format;                 // csv | swift | h5part
@@ -22,6 +29,13 @@ struct Snapshot {
   std::optional<double> time;         // from the file's header, when it has one
   std::map<std::string, std::vector<double>> columns;  // sphv's names
   std::map<std::string, std::string> taken_from;        // sphv name -> the file's name for it
+  std::string time_from;                                // where the time was read ("" = none)
+  // What the file states: "gamma" (the adiabatic index), "box" (x_lo, x_hi[, y_lo, y_hi[, z_lo,
+  // z_hi]], one pair per dimension), "periodic" (1 or 0).
+  std::map<std::string, Stated> stated;
+  // Relative round-off of each column as stored: 2^-53 for doubles, 2^-24 for float32; in a CSV
+  // file half a unit in the last digit of its longest number.
+  std::map<std::string, double> round_off;
 
   std::size_t size() const { return columns.empty() ? 0 : columns.begin()->second.size(); }
   bool has(const std::string& name) const { return columns.count(name) > 0; }
@@ -44,7 +58,7 @@ std::string canonical_column(const std::string& file_name);
 // (tests that feed thousands of generated files, where a fork costs more than the read).
 Snapshot read_snapshot(const std::filesystem::path& path, const std::string& format = "auto",
                        std::optional<long> step = std::nullopt, bool hdf5_in_child = true);
-// Writes the snapshot's columns (and its time) in the format, atomically.
+// Writes the snapshot's columns (and its time; CSV also what the file stated) in the format, atomically.
 void write_snapshot(const Snapshot& s, const std::filesystem::path& path, const std::string& format);
 
 // Path, size in bytes and SHA-256 of a file, for provenance.

@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include <catch2/catch.hpp>
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -98,6 +99,15 @@ bool try_file(const fs::path& file, const std::string& format, std::optional<lon
     REQUIRE(c.size() == s.size());
     for (double v : c) REQUIRE(std::isfinite(v));
   }
+  // What it states of the set-up: a box of lo < hi per dimension, gamma > 1, periodic 0 or 1.
+  if (s.stated.count("box")) {
+    const auto& box = s.stated.at("box").value;
+    REQUIRE(box.size() == 2 * std::size_t(s.dim));
+    for (std::size_t d = 0; d < box.size(); d += 2) REQUIRE((std::isfinite(box[d]) && std::isfinite(box[d + 1]) && box[d] < box[d + 1]));
+  }
+  if (s.stated.count("gamma")) REQUIRE((s.stated.at("gamma").value.at(0) > 1.0 && std::isfinite(s.stated.at("gamma").value.at(0))));
+  if (s.stated.count("periodic")) REQUIRE((s.stated.at("periodic").value.at(0) == 0.0 || s.stated.at("periodic").value.at(0) == 1.0));
+  for (const auto& [name, r] : s.round_off) REQUIRE((r >= 0.0 && r < 1.0));
   ++tally.accepted;
   for (double eps : {0.0, 0.01}) try {
       gravity_particles(s, eps);
@@ -212,6 +222,28 @@ void swift_file(const fs::path& p, fuzz::Inputs& gen) {
     if (gen.below(2)) attribute(header, "BoxSize", 1.0, gen);
     H5Gclose(header);
   }
+  if (gen.below(2)) {  // SWIFT's scheme: the adiabatic index and the kernel's support / h
+    const hid_t scheme = H5Gcreate2(w.file, "HydroScheme", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    if (gen.below(4)) attribute(scheme, "Adiabatic index", 5.0 / 3.0, gen);
+    if (gen.below(4)) attribute(scheme, "Kernel gamma", 1.825742, gen);
+    H5Gclose(scheme);
+  }
+  if (gen.below(3) == 0) {  // SWIFT's run-time parameters: strings
+    const hid_t params = H5Gcreate2(w.file, "Parameters", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    static const char* texts[] = {"1", "0", "", "yes", "11"};
+    const std::string text = texts[gen.below(std::size(texts))];
+    if (gen.below(4)) {
+      const hid_t type = H5Tcopy(H5T_C_S1);
+      H5Tset_size(type, std::max<std::size_t>(1, text.size()));
+      const hid_t space = H5Screate(H5S_SCALAR);
+      const hid_t a = H5Acreate2(params, "InitialConditions:periodic", type, space, H5P_DEFAULT, H5P_DEFAULT);
+      H5Awrite(a, type, text.empty() ? "\0" : text.c_str());
+      H5Aclose(a), H5Sclose(space), H5Tclose(type);
+    } else {
+      attribute(params, "InitialConditions:periodic", 1.0, gen);  // a number where SWIFT writes text
+    }
+    H5Gclose(params);
+  }
   if (gen.below(12) == 0) {  // PartType0 a dataset, not a group
     dataset(w.file, "PartType0", n, 1, gen);
     return;
@@ -248,6 +280,19 @@ void h5part_file(const fs::path& p, fuzz::Inputs& gen) {
     }
     const hid_t g = H5Gcreate2(w.file, name, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
     if (gen.below(6)) attribute(g, "time", 0.1, gen);
+    // SPH-EXA's set-up attributes: gamma (here or at the root), the box, the boundary types.
+    if (gen.below(3)) attribute(gen.below(2) ? g : w.file, "gamma", 5.0 / 3.0, gen);
+    if (gen.below(3)) {
+      std::vector<double> box = {-0.5, 0.5, -0.5, 0.5, -0.5, 0.5};
+      box.resize(gen.below(8));
+      if (!box.empty() && gen.below(4) == 0) box[gen.below(box.size())] = awkward(gen);
+      const hsize_t nb = box.size();
+      const hid_t space = H5Screate_simple(1, &nb, nullptr);
+      const hid_t a = H5Acreate2(g, "box", H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT);
+      if (nb > 0) H5Awrite(a, H5T_NATIVE_DOUBLE, box.data());
+      H5Aclose(a), H5Sclose(space);
+    }
+    if (gen.below(3)) attribute(g, "boundaryType", double(gen.below(4)), gen);
     for (const char* field : {"x", "y", "z", "vx", "vy", "vz", "m", "rho", "u", "p", "h"}) {
       const bool coordinate = field[1] == '\0' && field[0] >= 'x';
       if (coordinate && std::size_t(field[0] - 'x') >= dim && gen.below(4)) continue;
@@ -306,7 +351,8 @@ Reading hdf5_input(const fs::path& f, fuzz::Inputs& gen, const std::string& good
 
 TEST_CASE("fuzz: 10,000+ malformed CSV snapshots are refused or read soundly", "[fuzz][snapshot]") {
   write_csv_snapshot(valid(12), scratch_dir() / "valid.csv");
-  const std::string text = fuzz::slurp(scratch_dir() / "valid.csv");
+  // With the comments that state the set-up, for the mutations to reach their parsing too.
+  const std::string text = "# gamma = 1.4\n# box = -1,1,-1,1,-1,1\n# periodic = yes\n" + fuzz::slurp(scratch_dir() / "valid.csv");
   fuzz_reader("csv", 10, [&](const fs::path& f, fuzz::Inputs& gen) {
     write_bytes(f, gen.mutate(text));
     return Reading{gen.below(2) ? "csv" : "auto", std::nullopt};
