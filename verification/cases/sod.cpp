@@ -166,8 +166,10 @@ std::vector<ParamSpec> params(long n_default, double hfact_default) {
       choice_param("preset", "sod", "Riemann problem: sod = Toro 1; toro2 123; toro3/4 blast waves; toro5 collision",
                    {"sod", "toro2", "toro3", "toro4", "toro5"}),
   };
-  for (const char* k : state_keys)
-    ps.push_back({k, ParamSpec::Kind::Text, "preset", "number overriding the preset (default: the preset's; x0: the domain's middle)"});
+  for (const std::string k : state_keys)
+    ps.push_back({k, ParamSpec::Kind::Text, "preset",
+                  k == "x0" ? "interface position (default: the domain's middle, Toro's 0.5)"
+                            : "number overriding the preset (default: the preset's)"});
   ps.push_back({"domain", ParamSpec::Kind::Text, "0,1",
                 "x_lo,x_hi of the tube in a scored snapshot (sphv score: default the file's box; sphv run's tube is [0, 1])"});
   ps.push_back(choice_param("ends", "open",
