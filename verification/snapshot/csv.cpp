@@ -4,7 +4,6 @@
 #include <cctype>
 #include <cmath>
 #include <fstream>
-#include <sstream>
 #include <string_view>
 
 #include "verification/params.hpp"
@@ -129,7 +128,7 @@ Snapshot read_csv_snapshot(const std::filesystem::path& path) {
 
 void write_csv_snapshot(const Snapshot& s, const std::filesystem::path& path) {
   std::string out;
-  if (s.time) out += "# time = " + [&] { std::ostringstream o; o.precision(17); o << *s.time; return o.str(); }() + "\n";
+  if (s.time) out += "# time = " + shortest(*s.time) + "\n";
   std::vector<const std::vector<double>*> cols;
   for (const auto& name : snapshot_names())
     if (s.has(name)) {
