@@ -66,8 +66,11 @@ add_test(NAME ic_score_at_time_zero_refused COMMAND bash -c
 set_tests_properties(ic_score_at_time_zero_refused PROPERTIES PASS_REGULAR_EXPRESSION "^sphv: error: t_end must be > 0, got 0\nPASS")
 
 # --set: key=value lists separated by commas or blanks, simple fractions; malformed ones refused.
-foreach(_form "E=1,rho0=1 gamma=5/3" "E=1 rho0=1,gamma=5/3")
-  string(MAKE_C_IDENTIFIER "${_form}" _id)
+foreach(_id commas blanks)
+  set(_form "E=1,rho0=1 gamma=5/3")  # commas between two items, a blank before the fraction
+  if(_id STREQUAL "blanks")
+    set(_form "E=1 rho0=1,gamma=5/3")
+  endif()
   add_test(NAME score_set_list_${_id} COMMAND bash -c
     "rm -rf set_${_id} && $<TARGET_FILE:sphv> score sedov --snapshot ${CMAKE_SOURCE_DIR}/verification/tests/data/sphexa-sedov-n12.h5 --set '${_form}' --out set_${_id} >/dev/null; python3 -c 'import json, sys; p = json.load(open(sys.argv[1]))[\"params\"]; print(\"gamma\", repr(p[\"gamma\"]), \"E\", p[\"E\"], \"rho0\", p[\"rho0\"])' set_${_id}/result.json"
     WORKING_DIRECTORY ${_sdir})

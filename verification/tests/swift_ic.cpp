@@ -158,7 +158,7 @@ TEST_CASE("swift ic: sedov, noh and evrard are read as SWIFT reads them, centred
     int dim;
     double box;
   };
-  for (const One& one : {One{"sedov", {"n=8", "dim=3"}, 3, 1.0}, One{"noh", {"n=40", "dim=2"}, 2, 2.0},
+  for (const One& one : {One{"sedov", {"n=16", "dim=3"}, 3, 1.0}, One{"noh", {"n=40", "dim=2"}, 2, 2.0},
                          One{"evrard", {"n=500"}, 3, 100.0}}) {
     INFO(one.name);
     const fs::path file = written(one.name, one.settings);
