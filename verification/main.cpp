@@ -259,20 +259,27 @@ void add_score_command(CLI::App& app, int& status) {
   cmd->add_option("--format", o->format, "auto|csv|swift|h5part (default auto)")
       ->check(CLI::IsMember({"auto", "csv", "swift", "h5part"}));
   cmd->add_option("--step", o->step, "H5Part step k of /Step#k (default: the last)")->check(non_negative);
-  cmd->add_option("--set", o->settings, "case parameter as key=value (repeatable; see 'sphv info CASE')")->take_all();
+  cmd->add_option("--set", o->settings, "case parameters as key=value, separated by commas or blanks (repeatable; see 'sphv info CASE')")->take_all();
   cmd->add_option("--out", o->out, "output directory (default runs/CASE-score)");
   cmd->add_flag("--force", o->force, "score with --set values that contradict what the file states");
-  cmd->callback([o, &status] { status = score_command(*o); });
+  cmd->callback([o, &status] {
+    o->settings = split_settings(o->settings);
+    status = score_command(*o);
+  });
 }
 
 void add_ic_command(CLI::App& app) {
   auto o = std::make_shared<IcOptions>();
   auto* cmd = app.add_subcommand("ic", "write a case's initial conditions (for another code to start from)");
   cmd->add_option("case", o->case_name, "case name (sod, sod2d, sod3d, sedov, noh, evrard, heat)")->required();
-  cmd->add_option("--set", o->settings, "case parameter as key=value (repeatable; n is the level)")->take_all();
+  cmd->add_option("--set", o->settings, "case parameters as key=value, separated by commas or blanks (repeatable; n is the level)")->take_all();
   cmd->add_option("--out", o->out, "output file")->required();
-  cmd->add_option("--format", o->format, "csv|swift|h5part (default csv)")->check(CLI::IsMember({"csv", "swift", "h5part"}));
-  cmd->callback([o] { ic_command(*o); });
+  cmd->add_option("--format", o->format, "csv|swift|h5part (default: from the extension, .csv .hdf5/.h5 .h5part)")
+      ->check(CLI::IsMember({"auto", "csv", "swift", "h5part"}));
+  cmd->callback([o] {
+    o->settings = split_settings(o->settings);
+    ic_command(*o);
+  });
 }
 
 void add_convert_command(CLI::App& app) {
@@ -323,7 +330,7 @@ int run_main(int argc, char** argv) {
   RunOptions opt;
   auto* run = app.add_subcommand("run", "run one case: writes DIR/result.json (and particles.csv)");
   run->add_option("case", case_name, "case name (see 'sphv list'; parameters: 'sphv info CASE')")->required();
-  run->add_option("--set", settings, "parameter as key=value (repeatable)")->take_all();
+  run->add_option("--set", settings, "parameters as key=value, separated by commas or blanks (repeatable)")->take_all();
   run->add_option("--out", out, "output directory (default runs/CASE)");
 
   std::vector<long> levels;
@@ -333,7 +340,7 @@ int run_main(int argc, char** argv) {
   sweep->add_option("case", case_name, "case name")->required();
   auto* levels_opt = sweep->add_option("--levels", levels_arg, "values of n, e.g. 16,32,64, run exactly as given (default: the tier's)");
   sweep->add_option("--tier", tier_name, "quick | standard | full: the case's levels for that tier (default standard)");
-  sweep->add_option("--set", settings, "parameter as key=value (repeatable)")->take_all();
+  sweep->add_option("--set", settings, "parameters as key=value, separated by commas or blanks (repeatable)")->take_all();
   sweep->add_option("--vary", vary, "variants as key=a,b,c (repeatable: the product); DIR/<variant>/sweep.json")->take_all();
   sweep->add_option("--out", out, "output directory (default runs/CASE-sweep)");
   opt.jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
@@ -345,6 +352,9 @@ int run_main(int argc, char** argv) {
                     "tier's, quick 120, standard 600, full none; none with --levels)")->check(seconds);
   std::string runner;
   sweep->add_option("--runner", runner, "external code: COMMAND run per level with {n} {ic} {out} {t_end} {threads}; {out} scored");
+  std::string ic_format = "csv";
+  sweep->add_option("--ic-format", ic_format, "format of the runner's {ic} file: csv|swift|h5part (default csv)")
+      ->check(CLI::IsMember({"csv", "swift", "h5part"}));
 
   auto* verify_cmd = app.add_subcommand("verify", "the default catalogue: sweeps, gates, summary table");
   verify_cmd->add_option("--out", out, "output directory (default runs/verify)");
@@ -382,6 +392,7 @@ int run_main(int argc, char** argv) {
     }
     app.parse(argc, argv);
     if (score_status != 0) return score_status;
+    settings = split_settings(settings);
     if (!baselines.empty()) set_baseline_dir(baselines);
     const Tier tier = parse_tier(tier_name);
     opt.exe = fs::canonical("/proc/self/exe");
@@ -402,7 +413,7 @@ int run_main(int argc, char** argv) {
       if (levels_opt->count() > 0) levels = parse_levels(levels_arg);
       if (!runner.empty()) {
         const Sweep s = runner_sweep(c, levels.empty() ? c.tier_levels(settings, tier) : levels, settings,
-                                     out.empty() ? fs::path("runs") / (c.name + "-runner") : out, runner);
+                                     out.empty() ? fs::path("runs") / (c.name + "-runner") : out, runner, ic_format);
         print_rows_header();
         print_rows(s);
         return status_of({s});

@@ -1,5 +1,7 @@
 #include "verification/params.hpp"
 
+#include <sstream>
+
 namespace sphv {
 
 ParamSpec integer_param(std::string name, long def, std::string help, std::optional<double> gt) {
@@ -124,6 +126,56 @@ nlohmann::json Params::to_json() const {
     else j[s.name] = text(s.name);
   }
   return j;
+}
+
+namespace {
+
+// One element of a value: a/b of two finite numbers with b != 0 as its quotient, anything without
+// '/' as it is.
+std::string without_fraction(const std::string& key, const std::string& element) {
+  const std::size_t slash = element.find('/');
+  if (slash == std::string::npos) return element;
+  double a = 0.0, b = 0.0;
+  if (!parse_finite(std::string_view(element).substr(0, slash), a) ||
+      !parse_finite(std::string_view(element).substr(slash + 1), b) || b == 0.0 || !std::isfinite(a / b))
+    throw InputError("parameter " + key + ": '" + element + "' is not a fraction a/b of finite numbers with b != 0");
+  return shortest(a / b);
+}
+
+}  // namespace
+
+std::vector<std::string> split_settings(const std::vector<std::string>& args) {
+  std::vector<std::string> items;
+  for (const auto& arg : args) {
+    auto take = [&](const std::string& piece) {
+      if (piece.find('=') != std::string::npos || items.empty()) items.push_back(piece);
+      else items.back() += "," + piece;  // a list value continued
+    };
+    std::size_t from = 0;
+    for (std::size_t comma = arg.find(','); ; comma = arg.find(',', from)) {
+      std::istringstream words(arg.substr(from, comma == std::string::npos ? std::string::npos : comma - from));
+      std::string word;
+      bool any = false;
+      while (words >> word) take(word), any = true;
+      if (!any) throw InputError("malformed setting '" + arg + "': an empty item between commas");
+      if (comma == std::string::npos) break;
+      from = comma + 1;
+    }
+  }
+  for (auto& kv : items) {
+    const auto eq = kv.find('=');
+    if (eq == std::string::npos || eq == 0) throw InputError("malformed setting '" + kv + "': expected key=value");
+    const std::string key = kv.substr(0, eq), value = kv.substr(eq + 1);
+    std::string out;
+    std::size_t from = 0;
+    for (std::size_t comma = value.find(','); ; comma = value.find(',', from)) {
+      out += (from == 0 ? "" : ",") + without_fraction(key, value.substr(from, comma == std::string::npos ? std::string::npos : comma - from));
+      if (comma == std::string::npos) break;
+      from = comma + 1;
+    }
+    kv = key + "=" + out;
+  }
+  return items;
 }
 
 std::vector<long> parse_levels(const std::string& text) {

@@ -72,6 +72,12 @@ class Params {
   std::map<std::string, std::string> values_;
 };
 
+// The settings as the user types them after --set, one key=value each: items separated by
+// commas or blanks ("E=1,rho0=1", "E=1 rho0=1"); an item without '=' continues the previous
+// value as a list (centre=0.5,0.5,0.5); a number written as a simple fraction a/b (gamma=5/3)
+// becomes the shortest form of its quotient. An InputError names a malformed item or fraction.
+std::vector<std::string> split_settings(const std::vector<std::string>& args);
+
 // A list of levels n as the user writes it after --levels: "16,32,64" (positive integers,
 // comma-separated). Anything else, the empty list included, is an InputError naming the fault.
 std::vector<long> parse_levels(const std::string& text);

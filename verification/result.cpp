@@ -52,10 +52,10 @@ nlohmann::json provenance() {
 namespace {
 // Figures may hold gaps: a non-finite point is drawn as a gap (null). Nothing else is written
 // non-finite: see name_non_finite.
-nlohmann::json number(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); }
+nlohmann::json finite_or_null(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); }
 nlohmann::json numbers(const std::vector<double>& v) {
   nlohmann::json a = nlohmann::json::array();
-  for (double x : v) a.push_back(number(x));
+  for (double x : v) a.push_back(finite_or_null(x));
   return a;
 }
 }  // namespace

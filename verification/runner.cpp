@@ -5,7 +5,6 @@
 
 #include <chrono>
 #include <cstdlib>
-#include <sstream>
 
 #include "verification/ic.hpp"
 #include "verification/score.hpp"
@@ -21,13 +20,6 @@ std::string replace_all(std::string s, const std::string& from, const std::strin
 // A word for /bin/sh: single-quoted.
 std::string quoted(const std::string& s) { return "'" + replace_all(s, "'", "'\\''") + "'"; }
 
-std::string number(double v) {
-  std::ostringstream o;
-  o.precision(17);
-  o << v;
-  return o.str();
-}
-
 Result failed(const Case& c, const Params& p, std::string why) {
   Result r;
   r.case_name = c.name;
@@ -39,7 +31,7 @@ Result failed(const Case& c, const Params& p, std::string why) {
 }  // namespace
 
 Sweep runner_sweep(const Case& c, const std::vector<long>& levels, const std::vector<std::string>& settings,
-                   const std::filesystem::path& out, const std::string& command) {
+                   const std::filesystem::path& out, const std::string& command, const std::string& ic_format) {
   const Scorer& sc = find_scorer(c.name);
   const bool wants_ic = command.find("{ic}") != std::string::npos;
   std::vector<Params> params;  // every level is validated before the first command runs
@@ -54,14 +46,14 @@ Sweep runner_sweep(const Case& c, const std::vector<long>& levels, const std::ve
     const Params& p = params[k];
     const auto dir = out / ("n" + std::to_string(levels[k]));
     std::filesystem::create_directories(dir);
-    const auto snapshot = dir / "snapshot", ic = dir / "ic.csv", log = dir / "log.txt";
+    const auto snapshot = dir / "snapshot", ic = dir / ("ic." + std::string(ic_format == "swift" ? "hdf5" : ic_format)), log = dir / "log.txt";
     std::filesystem::remove(snapshot);
     std::string cmd = command;
-    if (wants_ic) write_ic(c, p, ic, "csv");
+    if (wants_ic) write_ic(c, p, ic, ic_format);
     cmd = replace_all(cmd, "{n}", std::to_string(levels[k]));
     cmd = replace_all(cmd, "{ic}", quoted(ic.string()));
     cmd = replace_all(cmd, "{out}", quoted(snapshot.string()));
-    cmd = replace_all(cmd, "{t_end}", sc.t_end ? number(sc.t_end(p)) : "");
+    cmd = replace_all(cmd, "{t_end}", sc.t_end ? shortest(sc.t_end(p)) : "");
     cmd = replace_all(cmd, "{threads}", std::to_string(omp_get_max_threads()));
     const auto t0 = std::chrono::steady_clock::now();
     const int status = std::system(("(" + cmd + ") > " + quoted(log.string()) + " 2>&1").c_str());

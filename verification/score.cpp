@@ -4,7 +4,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <sstream>
 
 namespace sphv {
 
@@ -28,12 +27,8 @@ std::optional<std::string> setting(const std::vector<std::string>& settings, con
   return v;
 }
 
-std::string number(double v) {
-  std::ostringstream o;
-  o.precision(17);
-  o << v;
-  return o.str();
-}
+// A time as the console and the settings show it: the shortest form that reads back exactly.
+std::string number(double v) { return shortest(v); }
 
 const ParamSpec* find_param(const Case& c, const std::string& key) {
   for (const auto& p : c.params)

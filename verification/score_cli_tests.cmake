@@ -42,6 +42,56 @@ set_tests_properties(ic_sedov_3d_swift PROPERTIES PASS_REGULAR_EXPRESSION "sedov
 add_test(NAME ic_noh_h5part COMMAND sphv ic noh --set dim=2 n=20 --out ${_sdir}/noh_ic.h5 --format h5part)
 set_tests_properties(ic_noh_h5part PROPERTIES PASS_REGULAR_EXPRESSION "noh n=20: initial conditions written")
 sphv_refuses(ic_noh_too_many_particles ic noh --set dim=3 --out ${_sdir}/noh_ic.csv)
+# The format follows the file's extension (.hdf5/.h5 SWIFT, .csv CSV) or is refused when they
+# contradict; SWIFT's tube has its interfaces where SWIFT's example puts them.
+add_test(NAME ic_format_from_extension COMMAND bash -c
+  "rm -f ext.hdf5 ext.csv && $<TARGET_FILE:sphv> ic sod --set n=40 --out ext.hdf5 && head -c 4 ext.hdf5 | grep -q HDF && $<TARGET_FILE:sphv> ic sod --set n=40 --out ext.csv && grep -q '^x,' ext.csv && echo PASS"
+  WORKING_DIRECTORY ${_sdir})
+set_tests_properties(ic_format_from_extension PROPERTIES PASS_REGULAR_EXPRESSION "written to ext.hdf5 \\(swift\\)(.|\n)*written to ext.csv \\(csv\\)(.|\n)*PASS")
+sphv_refuses(ic_hdf5_named_csv ic sod --out ${_sdir}/x.hdf5 --format csv)
+sphv_refuses(ic_csv_named_swift ic sod --out ${_sdir}/x.csv --format swift)
+sphv_refuses(ic_unknown_extension ic sod --out ${_sdir}/x.dat)
+sphv_refuses(ic_swift_tube_moved_interface ic sod --set x0=0.3 --out ${_sdir}/x.hdf5)
+# Nothing is written when refused.
+add_test(NAME ic_refusal_writes_nothing COMMAND bash -c
+  "rm -f none.hdf5; $<TARGET_FILE:sphv> ic sod --out none.hdf5 --format csv; test $? -eq 2 && test ! -e none.hdf5 && echo PASS"
+  WORKING_DIRECTORY ${_sdir})
+set_tests_properties(ic_refusal_writes_nothing PROPERTIES PASS_REGULAR_EXPRESSION "PASS")
+# A round trip at t = 0 is refused by the cases themselves: the tubes, noh and evrard take
+# t_end > 0 only, sedov's point blast is singular at t = 0 (the file's state is checked against
+# the cases' definitions in tests/swift_ic.cpp instead).
+add_test(NAME ic_score_at_time_zero_refused COMMAND bash -c
+  "$<TARGET_FILE:sphv> ic sod --set n=40 --out t0.hdf5 >/dev/null && $<TARGET_FILE:sphv> score sod --snapshot t0.hdf5 --out t0_score 2>&1; test $? -eq 2 && echo PASS"
+  WORKING_DIRECTORY ${_sdir})
+set_tests_properties(ic_score_at_time_zero_refused PROPERTIES PASS_REGULAR_EXPRESSION "^sphv: error: t_end must be > 0, got 0\nPASS")
+
+# --set: key=value lists separated by commas or blanks, simple fractions; malformed ones refused.
+foreach(_id commas blanks)
+  set(_form "E=1,rho0=1 gamma=5/3")  # commas between two items, a blank before the fraction
+  if(_id STREQUAL "blanks")
+    set(_form "E=1 rho0=1,gamma=5/3")
+  endif()
+  add_test(NAME score_set_list_${_id} COMMAND bash -c
+    "rm -rf set_${_id} && $<TARGET_FILE:sphv> score sedov --snapshot ${CMAKE_SOURCE_DIR}/verification/tests/data/sphexa-sedov-n12.h5 --set '${_form}' --out set_${_id} >/dev/null; python3 -c 'import json, sys; p = json.load(open(sys.argv[1]))[\"params\"]; print(\"gamma\", repr(p[\"gamma\"]), \"E\", p[\"E\"], \"rho0\", p[\"rho0\"])' set_${_id}/result.json"
+    WORKING_DIRECTORY ${_sdir})
+  set_tests_properties(score_set_list_${_id} PROPERTIES PASS_REGULAR_EXPRESSION "gamma 1.6666666666666667 E 1.0 rho0 1.0")
+endforeach()
+add_test(NAME score_set_list_keeps_vector_values COMMAND bash -c
+  "rm -rf set_centre && $<TARGET_FILE:sphv> score sedov --snapshot ${CMAKE_SOURCE_DIR}/verification/tests/data/sphexa-sedov-n12.h5 --set 'centre=1/4,0,0 E=1' --out set_centre >/dev/null; grep -o '\"centre\": \"[^\"]*\"' set_centre/result.json"
+  WORKING_DIRECTORY ${_sdir})
+set_tests_properties(score_set_list_keeps_vector_values PROPERTIES PASS_REGULAR_EXPRESSION "\"centre\": \"0.25,0,0\"")
+sphv_refuses(set_fraction_zero_denominator run kernel --set h=5/0)
+sphv_refuses(set_fraction_no_numerator run kernel --set h=/3)
+sphv_refuses(set_fraction_words run kernel --set h=a/b)
+sphv_refuses(set_empty_list_item run kernel --set "n=16,,h=0.1")
+sphv_refuses(score_set_fraction_zero_denominator score sedov --snapshot ${CMAKE_SOURCE_DIR}/verification/tests/data/sphexa-sedov-n12.h5 --set gamma=5/0)
+sphv_refuses(ic_set_fraction_no_numerator ic sod --set gamma=/3 --out ${_sdir}/f.csv)
+
+# Times on the console in the shortest form that reads back exactly (t = 0.2, not 17 digits).
+add_test(NAME score_time_shortest COMMAND bash -c
+  "rm -rf t_short && $<TARGET_FILE:sphv> --threads 1 run sod --set n=50 --out t_short >/dev/null; $<TARGET_FILE:sphv> convert --input t_short/particles.csv --out t_short.hdf5 --format swift --time 0.2 >/dev/null && $<TARGET_FILE:sphv> score sod --snapshot t_short.hdf5 --out t_short_score"
+  WORKING_DIRECTORY ${_sdir})
+set_tests_properties(score_time_shortest PROPERTIES PASS_REGULAR_EXPRESSION "t = 0\\.2\\)")
 
 # The SPH-EXA fixture scores as a Sedov blast from the command line (the last step by default).
 add_test(NAME score_sphexa_h5part COMMAND sphv score sedov --snapshot ${CMAKE_SOURCE_DIR}/verification/tests/data/sphexa-sedov-n12.h5 --out ${_sdir}/sphexa)
@@ -84,6 +134,17 @@ add_test(NAME runner_ic_placeholder COMMAND bash -c
   "rm -rf runner_ic && $<TARGET_FILE:sphv> sweep sod --levels 100 --runner 'test -s {ic} && grep -q ^x,vx,m,rho,u,p,h {ic} && bash ${CMAKE_SOURCE_DIR}/verification/tests/external_code.sh $<TARGET_FILE:sphv> sod {n} {out} csv' --out runner_ic; grep -q '\"verdict\": \"ok\"' runner_ic/n100/result.json && echo PASS"
   WORKING_DIRECTORY ${_sdir})
 set_tests_properties(runner_ic_placeholder PROPERTIES PASS_REGULAR_EXPRESSION "PASS")
+# {ic} in SWIFT's format driving a SWIFT-like command end to end: the stand-in reads the initial
+# conditions it is handed before it runs, and the sweep scores what it writes.
+add_test(NAME runner_swift_ic COMMAND bash -c
+  "rm -rf runner_swift_ic && $<TARGET_FILE:sphv> sweep sod --levels 100 --ic-format swift --runner 'bash ${CMAKE_SOURCE_DIR}/verification/tests/external_code.sh $<TARGET_FILE:sphv> sod {n} {out} swift --ic {ic}' --out runner_swift_ic; test -s runner_swift_ic/n100/ic.hdf5 && grep -h 'external code: read' runner_swift_ic/n100/log.txt && grep -q '\"verdict\": \"ok\"' runner_swift_ic/n100/result.json && echo PASS"
+  WORKING_DIRECTORY ${CMAKE_BINARY_DIR})
+set_tests_properties(runner_swift_ic PROPERTIES PASS_REGULAR_EXPRESSION "external code: read 11[0-9] particles at t = 0 \\(x, vx, m, rho, u, h\\)(.|\n)*PASS")
+# The stand-in refuses initial conditions without the gas state (here: no u).
+add_test(NAME runner_ic_without_state COMMAND bash -c
+  "printf '# time = 0\\nx,vx,m,rho,h\\n0.1,0,1,1,0.1\\n' > bad_ic.csv && bash ${CMAKE_SOURCE_DIR}/verification/tests/external_code.sh $<TARGET_FILE:sphv> sod 50 bad_out.csv csv --ic bad_ic.csv; test $? -ne 0 && echo PASS"
+  WORKING_DIRECTORY ${_sdir})
+set_tests_properties(runner_ic_without_state PROPERTIES PASS_REGULAR_EXPRESSION "lack u(.|\n)*PASS")
 
 # evrard from the command line: sphv run's particles as a SWIFT snapshot score to the run's
 # profile errors exactly (136 particles to t = 1.5, through the bounce: ~1 s).

@@ -7,7 +7,6 @@
 #include <cmath>
 #include <fstream>
 #include <optional>
-#include <sstream>
 #include <string_view>
 
 #include "verification/params.hpp"
@@ -192,7 +191,7 @@ Snapshot read_csv_snapshot(const std::filesystem::path& path) {
 
 void write_csv_snapshot(const Snapshot& s, const std::filesystem::path& path) {
   std::string out;
-  if (s.time) out += "# time = " + [&] { std::ostringstream o; o.precision(17); o << *s.time; return o.str(); }() + "\n";
+  if (s.time) out += "# time = " + shortest(*s.time) + "\n";
   // What the source file stated of the set-up, as the comments the reader takes.
   for (const auto& [key, st] : s.stated) {
     std::string v;

@@ -165,9 +165,11 @@ class Writer {
     if (groups_.back() < 0) throw std::runtime_error("cannot write group " + name + " in " + tmp_);
     return groups_.back();
   }
-  void dataset(hid_t loc, const std::string& name, const std::vector<double>& v, std::vector<hsize_t> dims) {
+  // The values are converted to the file's type (integers such as particle IDs are exact below 2^53).
+  void dataset(hid_t loc, const std::string& name, const std::vector<double>& v, std::vector<hsize_t> dims,
+               hid_t type = H5T_IEEE_F64LE) {
     const Handle space(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr), H5Sclose);
-    const Handle ds(H5Dcreate2(loc, name.c_str(), H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Dclose);
+    const Handle ds(H5Dcreate2(loc, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Dclose);
     if (!ds.ok() || H5Dwrite(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()) < 0)
       throw std::runtime_error("cannot write dataset " + name + " in " + tmp_);
   }

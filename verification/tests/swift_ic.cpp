@@ -1,0 +1,176 @@
+// `sphv ic --format swift`: the file is read the way SWIFT's read_ic_single (src/single_io.c)
+// reads initial conditions, with the memory types and buffer sizes SWIFT uses, and the gas
+// fields its hydro schemes declare compulsory (src/hydro/SPHENIX/hydro_io.h). The particles are
+// then checked against the case's own definition (the shock tube's two states, the periodic box).
+#include <hdf5.h>
+#include <unistd.h>
+
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <filesystem>
+#include <set>
+
+#include "verification/cases/sod_errors.hpp"
+#include "verification/ic.hpp"
+
+namespace fs = std::filesystem;
+using namespace sphv;
+
+namespace {
+
+constexpr int swift_type_count = 7;  // src/part_type.h: gas, dark matter, background, sink, stars, black holes, neutrinos
+
+struct Read {
+  int dimension = 3;  // SWIFT's assumption when the attribute is absent
+  double box[3] = {0.0, -1.0, -1.0};
+  long long n = 0;
+  std::map<std::string, std::vector<double>> gas;  // each field as SWIFT's memory type, widened
+};
+
+// An attribute as SWIFT's io_read_attribute reads it: H5Aread with the memory type into a buffer
+// of `room` elements; more elements in the file would overrun SWIFT's buffer.
+template <class T>
+std::vector<T> attribute(hid_t group, const char* name, hid_t memtype, std::size_t room) {
+  INFO(name);
+  const hid_t a = H5Aopen(group, name, H5P_DEFAULT);
+  REQUIRE(a >= 0);
+  const hid_t space = H5Aget_space(a);
+  const auto elements = static_cast<std::size_t>(H5Sget_simple_extent_npoints(space));
+  H5Sclose(space);
+  REQUIRE(elements <= room);
+  std::vector<T> v(room, T{});
+  REQUIRE(H5Aread(a, memtype, v.data()) >= 0);
+  H5Aclose(a);
+  return v;
+}
+
+// A dataset as read_array_single reads it: present (the compulsory fields), N x dim elements
+// (H5S_ALL into a buffer of N * dim), read with the memory type.
+template <class T>
+std::vector<double> dataset(hid_t group, const char* name, hid_t memtype, long long n, int dim) {
+  INFO(name);
+  REQUIRE(H5Lexists(group, name, H5P_DEFAULT) > 0);
+  const hid_t d = H5Dopen2(group, name, H5P_DEFAULT);
+  REQUIRE(d >= 0);
+  const hid_t space = H5Dget_space(d);
+  REQUIRE(H5Sget_simple_extent_npoints(space) == n * dim);
+  H5Sclose(space);
+  std::vector<T> v(n * dim);
+  REQUIRE(H5Dread(d, memtype, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()) >= 0);
+  H5Dclose(d);
+  return {v.begin(), v.end()};
+}
+
+Read read_like_swift(const fs::path& path) {
+  Read r;
+  const hid_t f = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  REQUIRE(f >= 0);
+  const hid_t h = H5Gopen2(f, "/Header", H5P_DEFAULT);
+  REQUIRE(h >= 0);
+  if (H5Aexists(h, "Dimension") > 0) r.dimension = attribute<int>(h, "Dimension", H5T_NATIVE_INT, 1)[0];
+  if (H5Aexists(h, "NumFilesPerSnapshot") > 0) CHECK(attribute<int>(h, "NumFilesPerSnapshot", H5T_NATIVE_INT, 1)[0] == 1);
+  CHECK(attribute<int>(h, "Flag_Entropy_ICs", H5T_NATIVE_INT, swift_type_count)[0] == 0);  // u, not entropy
+  const auto box = attribute<double>(h, "BoxSize", H5T_NATIVE_DOUBLE, 3);
+  const auto total = attribute<long long>(h, "NumPart_Total", H5T_NATIVE_LLONG, swift_type_count);
+  const auto high = attribute<long long>(h, "NumPart_Total_HighWord", H5T_NATIVE_LLONG, swift_type_count);
+  for (int t = 1; t < swift_type_count; ++t) CHECK(total[t] + high[t] == 0);  // gas only
+  r.n = total[0] + (high[0] << 32);
+  for (int d = 0; d < 3; ++d) r.box[d] = box[d];
+  H5Gclose(h);
+  // The Units group is optional for SWIFT, but once present all five attributes are read.
+  REQUIRE(H5Lexists(f, "/Units", H5P_DEFAULT) > 0);
+  const hid_t u = H5Gopen2(f, "/Units", H5P_DEFAULT);
+  for (const char* name : {"Unit length in cgs (U_L)", "Unit mass in cgs (U_M)", "Unit time in cgs (U_t)",
+                           "Unit current in cgs (U_I)", "Unit temperature in cgs (U_T)"})
+    CHECK(attribute<double>(u, name, H5T_NATIVE_DOUBLE, 1)[0] == 1.0);
+  H5Gclose(u);
+  const hid_t g = H5Gopen2(f, "/PartType0", H5P_DEFAULT);
+  REQUIRE(g >= 0);
+  r.gas["Coordinates"] = dataset<double>(g, "Coordinates", H5T_NATIVE_DOUBLE, r.n, 3);
+  r.gas["Velocities"] = dataset<float>(g, "Velocities", H5T_NATIVE_FLOAT, r.n, 3);
+  for (const char* name : {"Masses", "SmoothingLength", "InternalEnergy", "Density"})
+    r.gas[name] = dataset<float>(g, name, H5T_NATIVE_FLOAT, r.n, 1);
+  r.gas["ParticleIDs"] = dataset<unsigned long long>(g, "ParticleIDs", H5T_NATIVE_ULLONG, r.n, 1);
+  H5Gclose(g);
+  H5Fclose(f);
+  return r;
+}
+
+fs::path written(const std::string& case_name, const std::vector<std::string>& settings) {
+  const fs::path file = fs::temp_directory_path() / ("sphv_swift_ic_" + std::to_string(getpid()) + "_" + case_name + ".hdf5");
+  const Case& c = find_case(case_name);
+  write_ic(c, c.parse(settings), file, "swift");
+  return file;
+}
+
+// Every particle inside the periodic box, IDs 1..N once each, positive masses and support radii.
+void check_common(const Read& r, int dim) {
+  CHECK(r.dimension == dim);
+  REQUIRE(r.n > 0);
+  std::set<double> ids(r.gas.at("ParticleIDs").begin(), r.gas.at("ParticleIDs").end());
+  CHECK(static_cast<long long>(ids.size()) == r.n);
+  CHECK(*ids.begin() == 1.0);
+  const auto& x = r.gas.at("Coordinates");
+  for (long long i = 0; i < r.n; ++i) {
+    for (int d = 0; d < 3; ++d) {
+      INFO("particle " << i << " axis " << d);
+      if (d < dim) CHECK((x[3 * i + d] >= 0.0 && x[3 * i + d] < r.box[d]));
+      else CHECK(x[3 * i + d] == 0.0);
+    }
+    CHECK(r.gas.at("Masses")[i] > 0.0);
+    CHECK(r.gas.at("SmoothingLength")[i] > 0.0);
+  }
+}
+
+}  // namespace
+
+TEST_CASE("swift ic: the periodic shock tube on [0, 2] is read as SWIFT reads it, both states exact", "[score]") {
+  for (const auto& [name, dim] : {std::pair<std::string, int>{"sod", 1}, {"sod2d", 2}}) {
+    INFO(name);
+    const fs::path file = written(name, {"n=40"});
+    const Read r = read_like_swift(file);
+    fs::remove(file);
+    check_common(r, dim);
+    CHECK(r.box[0] == 2.0);
+    const TubeProblem pr = tube_problem(find_case(name).parse({}));
+    const double hfact = find_case(name).parse({}).real("hfact");
+    long long left = 0;
+    for (long long i = 0; i < r.n; ++i) {
+      const double x = r.gas.at("Coordinates")[3 * i];
+      const auto& st = x < 1.0 ? pr.left : pr.right;  // interfaces at x = 1 and at the wrap 0 = 2
+      left += x < 1.0;
+      INFO("x = " << x);
+      CHECK(r.gas.at("Density")[i] == Approx(st.rho).epsilon(1e-7));  // float32 as SWIFT reads it
+      CHECK(r.gas.at("InternalEnergy")[i] == Approx(st.p / ((pr.gamma - 1.0) * st.rho)).epsilon(1e-7));
+      CHECK(r.gas.at("Velocities")[3 * i] == Approx(st.u).margin(1e-7));
+      // SWIFT's h times its cubic spline's kernel_gamma is sphv's support radius (50).
+      const double support = hfact * std::pow(r.gas.at("Masses")[i] / st.rho, 1.0 / dim);
+      CHECK(r.gas.at("SmoothingLength")[i] * swift_kernel_gamma(dim) == Approx(support).epsilon(1e-6));
+    }
+    if (dim == 1) CHECK(left == 40);  // n per unit length on the left, [0, 1)
+  }
+}
+
+TEST_CASE("swift ic: sedov, noh and evrard are read as SWIFT reads them, centred in their boxes", "[score]") {
+  struct One {
+    std::string name;
+    std::vector<std::string> settings;
+    int dim;
+    double box;
+  };
+  for (const One& one : {One{"sedov", {"n=16", "dim=3"}, 3, 1.0}, One{"noh", {"n=40", "dim=2"}, 2, 2.0},
+                         One{"evrard", {"n=500"}, 3, 100.0}}) {
+    INFO(one.name);
+    const fs::path file = written(one.name, one.settings);
+    const Read r = read_like_swift(file);
+    fs::remove(file);
+    check_common(r, one.dim);
+    for (int d = 0; d < 3; ++d) CHECK(r.box[d] == one.box);
+    // The centre of mass at the box's centre: the set-ups are symmetric about their centre.
+    for (int d = 0; d < one.dim; ++d) {
+      double mx = 0.0, m = 0.0;
+      for (long long i = 0; i < r.n; ++i) mx += r.gas.at("Masses")[i] * r.gas.at("Coordinates")[3 * i + d], m += r.gas.at("Masses")[i];
+      CHECK(mx / m == Approx(one.box / 2.0).epsilon(1e-6));
+    }
+  }
+}
