@@ -103,6 +103,7 @@ Result score_sedov(const Params& prm, const Snapshot& s) {
       const auto c = radial::centre<D>(prm);
       const auto v = s.has("vx") ? vectors<D>(s, "v", who) : std::vector<sph::Vec<D>>{};
       sedov::measure<D>(r, vectors<D>(s, "", who, c), v, s.at("m", who), s.at("rho", who),
+                        s.has("h") ? s.at("h", who) : std::vector<double>{}, prm.real("h_support"),
                         static_cast<int>(prm.integer("n")), prm.real("E"), prm.real("rho0"), prm.real("t"), exact);
     }
     return r;
