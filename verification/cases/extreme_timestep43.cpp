@@ -88,11 +88,13 @@ std::vector<Check> gates(const Sweep& s) {
                    0.6, "finest / coarsest level must fall (measured 0.50-0.54 a doubling at hfact 2)",
                    Check::Kind::verification, "L1_rho_courant"});
     if (r.errors.count("L1_rho_courant") && k + 1 == s.runs.size()) {
-      // Measured at n = 400, the finest quick level: hfact 2.4 p_ratio 10 0.01065, 1000 0.01379;
-      // hfact 2 p_ratio 10 0.005329; bound + 20 %.
-      const double measured = exact_sums ? 0.005329 : p_l > 100.0 ? 0.01379 : 0.01065;
+      // At hfact 2 the error falls: measured 0.005329 at n = 400, the finest quick level. At 2.4 it
+      // levels off: the largest measured on 200..800 (p_ratio 10 0.01343, 1000 0.01776). Bound
+      // + 20 %.
+      const double measured = exact_sums ? 0.005329 : p_l > 100.0 ? 0.01776 : 0.01343;
       c.push_back({level + "_L1_rho_courant", r.errors.at("L1_rho_courant"), 0.0, 1.2 * measured,
-                   "finest level: measured " + std::to_string(measured) + " at n = 400 + 20 %",
+                   "finest level: measured " + std::to_string(measured) +
+                       (exact_sums ? " at n = 400 + 20 %" : ", the largest on n = 200..800, + 20 %"),
                    Check::Kind::verification, "L1_rho_courant"});
     }
   }
