@@ -12,7 +12,7 @@ namespace {
 std::string figure_of(double v) {
   if (!std::isfinite(v)) return "-";
   char buf[32];
-  std::snprintf(buf, sizeof buf, "%.3g", v);
+  std::snprintf(buf, sizeof buf, "%.4g", v);
   return buf;
 }
 

@@ -3,7 +3,7 @@
 // placeholders and the harness fills them in from that sweep's runs, so a reason can never carry
 // a number measured on another variant, at other levels or by an older build.
 //   {levels}        "n = 200, 400, 800"
-//   {NAME}          the error NAME at every level, e.g. "0.0132, 0.0133, 0.0133"
+//   {NAME}          the error NAME at every level, four digits, e.g. "0.0132, 0.0133, 0.0133"
 //   {extra.KEY}     the run's extra KEY (a number) at every level
 //   {order.NAME}    the observed order of NAME with its standard error, e.g. "0.02 +- 0.01"
 // A value a run lacks prints as "-"; an unknown placeholder stays as written, so a test finds it.

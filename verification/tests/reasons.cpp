@@ -85,7 +85,7 @@ TEST_CASE("a known failure names a catalogue variant of its case that claims the
 TEST_CASE("fill_reason quotes the sweep's own runs", "[reasons]") {
   const sphv::Sweep s = sphv::summarise(sphv::find_case("noh"), {}, {100, 200}, noh_runs(0.0132, 0.0133));
   CHECK(sphv::fill_reason("{rho_post} at {levels}; {extra.rho_post_measured}; {order.rho_post}; {nothing}", s) ==
-        "0.0132, 0.0133 at n = 100, 200; 3.91, 3.92; -0.0109; {nothing}");
+        "0.0132, 0.0133 at n = 100, 200; 3.91, 3.92; -0.01089; {nothing}");
   CHECK(sphv::describe_reason("{rho_post} at {levels}") == "<rho_post at each level> at <the levels>");
 }
 
