@@ -67,12 +67,22 @@ TubeProblem problem(const Params& p) {
   if (!(pr.left.p > 0.0 && pr.right.p > 0.0)) throw InputError("pressures p_l, p_r must be > 0");
   if (!(pr.x0 > lo && pr.x0 < hi))
     throw InputError("x0 must lie inside the tube's domain (" + shortest(lo) + ", " + shortest(hi) + "), got " + p.text("x0"));
-  if (!(pr.t_end > 0.0)) throw InputError("t_end must be > 0, got " + p.text("t_end"));
+  // t_end = 0 scores initial conditions (sphv ic, then sphv score): the exact solution is the two
+  // states on either side of x0 (and of the wrap); a run needs t_end > 0 (run_problem).
+  if (!(pr.t_end >= 0.0)) throw InputError("t_end must be >= 0, got " + p.text("t_end"));
   try {
     static_cast<void>(TubeExact{pr});
   } catch (const reference::RiemannError& e) {
     throw InputError(e.what());
   }
+  return pr;
+}
+
+// The problem of a run: as problem(), with a time to run to.
+TubeProblem run_problem(const Params& p) {
+  TubeProblem pr = problem(p);
+  if (!(pr.t_end > 0.0))
+    throw InputError("t_end must be > 0 for a run, got " + p.text("t_end") + " (t = 0 is for scoring initial conditions)");
   return pr;
 }
 
@@ -117,7 +127,7 @@ Figure profile(const std::string& field, const std::string& label, const TubeRun
 
 template <int D>
 Result run(const Params& p) {
-  const TubeProblem pr = problem(p);
+  const TubeProblem pr = run_problem(p);
   if (pr.x_lo != 0.0 || pr.x_hi != 1.0 || pr.ends != "open")
     throw InputError("domain and ends describe a scored snapshot (sphv score); sphv run's tube is [0, 1], open");
   const long n = p.integer("n");
