@@ -63,6 +63,7 @@ Result run_dim(const Params& prm) {
   sedov::measure<D>(r, p.x, p.v, p.m, p.rho, p.h, 1.0, n, E, rho0, out.t, exact);
   r.extra["energy_drift"] = (E1 - E0) / E0;
   r.extra["kinetic_fraction"] = kinetic / E1;
+  r.extra["kinetic_fraction_exact"] = sedov::kinetic_share(exact, D);
   r.particles = extreme::particle_table(p, m.gamma);
   return r;
 }
@@ -82,13 +83,13 @@ void validate(const Params& p) {
                      " holds no particle: raise r_blast or n");
 }
 
-// Measured L1_rho at the finest quick level of each catalogue variant (2D n = 64, 3D n = 16; one
-// thread, the drift baseline's values): default 0.2030, dim=3 0.3059, gamma=1.4 0.3295, energy=41
-// 0.2015. The bound at a sweep's finest level is that + 20 % (the error falls with n in 2D, so it
-// holds on the standard levels; 3D: it does not fall on 16..32, and the bound is gated at the
-// quick level only).
+// Measured L1_rho at the finest quick level of each catalogue variant (2D n = 64; 3D n = 24 at
+// r_blast 1/4, n = 32 at 1/2; one thread): default 0.2030, gamma=1.4 0.3295, energy=41 0.2015,
+// dim=3 0.3207, dim=3 r_blast=0.5 0.2514. The bound at a sweep's finest level is that + 20 %: no
+// variant's error grows beyond its finest quick level on the standard and full levels (3D at
+// r_blast 1/4: 0.3187 at n = 32, 0.2565 at 48).
 double l1_measured(const Params& p) {
-  if (p.integer("dim") == 3) return 0.3059;
+  if (p.integer("dim") == 3) return p.real("r_blast") == 0.5 ? 0.2514 : 0.3207;
   if (p.real("gamma") == 1.4) return 0.3295;
   return p.text("energy") == "41" ? 0.2015 : 0.2030;
 }
@@ -105,15 +106,13 @@ std::vector<Check> gates(const Sweep& s) {
                  "R_front within tol of the kernel-smoothed exact front (measured, margin stated in sedov.cpp)",
                  Check::Kind::verification, "shock_radius"});
   });
-  // 2D: the finest level; 3D: the quick level n = 16 (the error does not fall yet, see above).
+  // The finest level of the sweep.
   const Params p = find_case(s.case_name).parse(s.settings);
-  const bool d3 = p.integer("dim") == 3;
-  for (std::size_t k = 0; k < s.runs.size(); ++k) {
-    const bool gated = d3 ? s.levels[k] == 16 : k + 1 == s.runs.size();
-    if (!gated || !s.runs[k].errors.count("L1_rho")) continue;
+  if (!s.runs.empty() && s.runs.back().errors.count("L1_rho")) {
     const double m = l1_measured(p);
-    c.push_back({"n" + std::to_string(s.levels[k]) + "_L1_rho", s.runs[k].errors.at("L1_rho"), 0.0, 1.2 * m,
-                 "measured " + std::to_string(m) + " at the quick level + 20 %", Check::Kind::verification, "L1_rho"});
+    c.push_back({"n" + std::to_string(s.levels.back()) + "_L1_rho", s.runs.back().errors.at("L1_rho"), 0.0, 1.2 * m,
+                 "measured " + std::to_string(m) + " at the finest quick level + 20 %", Check::Kind::verification,
+                 "L1_rho"});
   }
   return c;
 }
@@ -130,21 +129,33 @@ std::vector<Check> gates(const Sweep& s) {
 // minus a margin of 0.02. shock_radius gamma 5/3 0.67, gamma 1.4 1.07, (41) 1.69: faster
 // than first order while the blast's memory fades (the profile's lag behind the similarity
 // solution falls faster than h on these levels); band 0.8 around 1 (1.69 plus a margin of 0.11).
-// 3D (n = 16, 24, 32): the front lags the kernel-smoothed exact front more at each finer level
-// and the density L1 does not fall; the kinetic share of the energy stays near its n = 16 value.
-// The same set-up in 2D (the deposit on R/4, the same hfact and viscosity) converges: the cause
-// is specific to 3D and not found yet, so both are known failures with the 2D default as the
-// variant that converges.
-OrderClaims sedov_orders(const Params&) {
-  // 3D claims the same orders and, on 16, 24, 32, misses them: the particles' front trails the
-  // kernel-smoothed exact front further at each finer level (extra front_offset) and the density
-  // L1 does not fall. No experiment here shows the cause, so these rows fail rather than being
-  // marked known failures.
-  return {{"shock_radius", {1.0, 0.8, "the front's offset from the kernel-smoothed exact front: the shock's width "
-                                      "beyond the kernel's and the blast's memory, first order in h ~ 1/n (faster "
-                                      "while the blast's memory fades)"}},
-          {"L1_rho", {1.0, 0.75, "a shock smeared over a few h: L1 first order in h at fixed hfact; "
-                                 "pre-asymptotic on the affordable levels (local orders rising towards 1)"}}};
+// 3D: with the heat on R/4 the deposit spans 1.2, 1.8, 2.4 lattice spacings at n = 16, 24, 32
+// (2D's coarsest level, n = 32, already has 2.4), and the hot particles keep the heat: the kinetic
+// share of the energy stays at 0.20-0.21 (exact 0.283), the front trails the kernel-smoothed exact
+// front further at each level (2.4, 4.4, 6.8 %) and L1_rho stays at 0.31-0.32; from n = 48 (3.6
+// spacings) the share rises (0.249) and both errors fall (3.9 %, 0.257). The same levels with
+// the heat on R/2 (2.4-4.8 spacings) converge: share 0.222, 0.239, 0.257 (0.277 at 48), L1_rho
+// 0.336, 0.283, 0.251 (0.200), front offset 3.0, 2.9, 2.4 % (2.0 %). A smaller Courant number
+// (0.15) changes nothing (the time step is not the cause), and the wider support hfact 4 does not
+// converge either. So 3D at R/4 is a known failure, with the deposit on R/2 as the variant that
+// converges; the deposit's finite size is remembered at t_end (the error's limit is the point
+// blast's only as the deposit shrinks, which at fixed r_blast it does not: on these levels the
+// shock's smearing is larger than that memory).
+OrderClaims sedov_orders(const Params& p) {
+  const OrderClaim radius{1.0, 0.8, "the front's offset from the kernel-smoothed exact front: the shock's width "
+                                    "beyond the kernel's and the blast's memory, first order in h ~ 1/n (faster "
+                                    "while the blast's memory fades)"};
+  const OrderClaim l1{1.0, 0.75, "a shock smeared over a few h: L1 first order in h at fixed hfact; "
+                                 "pre-asymptotic on the affordable levels (local orders rising towards 1)"};
+  if (p.integer("dim") == 3 && p.real("r_blast") == 0.25) {
+    const std::string why = "the blast's heat on R/4 spans {extra.blast_spacings} lattice spacings at {levels}: the hot "
+                            "particles keep it, the kinetic share of the energy is {extra.kinetic_fraction} against "
+                            "{extra.kinetic_fraction_exact} exact, the front's offset {extra.front_offset} and L1_rho "
+                            "{L1_rho}";
+    return {{"shock_radius", known_failure(radius.expected, radius.band, why, "dim=3,r_blast=0.5")},
+            {"L1_rho", known_failure(l1.expected, l1.band, why, "dim=3,r_blast=0.5")}};
+  }
+  return {{"shock_radius", radius}, {"L1_rho", l1}};
 }
 
 // Cost (wall, one thread, on a machine shared with other builds): 2D n = 32 4 s, 64 24 s, 128 ~60 s
@@ -177,12 +188,15 @@ const Registration reg{Case{
     .levels = levels,
     .orders = sedov_orders,
     .error_defs = sedov::error_defs,
-    .variants = {{}, {"dim=3"}, {"gamma=1.4"}, {"energy=41"}},
+    .variants = {{}, {"dim=3"}, {"dim=3", "r_blast=0.5"}, {"gamma=1.4"}, {"energy=41"}},
     .levels_for = [](const Params& p) {
-      // 3D: n = 16 8 s (4096 particles), 24 104 s, 32 271 s (one thread, shared machine), 48 ~25 min
-      // (estimated ~n^4). Quick: one level (a second would cost the quick tier's budget);
-      // standard: three, for the order; full adds 48.
-      if (p.integer("dim") == 3) return Levels{.quick = {16}, .standard = {16, 24, 32}, .full = {16, 24, 32, 48}};
+      // 3D (one thread): n = 16 1 s (4096 particles), 24 6 s, 32 30 s, 48 110 s. Quick: two levels
+      // each, so that CI gates the known failure (16, 24) and the converging variant (16, 32);
+      // standard: three; full adds 48.
+      if (p.integer("dim") == 3)
+        return Levels{.quick = p.real("r_blast") == 0.5 ? std::vector<long>{16, 32} : std::vector<long>{16, 24},
+                      .standard = {16, 24, 32},
+                      .full = {16, 24, 32, 48}};
       return levels;
     },
     .validate = validate,

@@ -8,6 +8,7 @@
 
 #include "reference/noh.hpp"
 #include "reference/sedov.hpp"
+#include "verification/cases/sedov_errors.hpp"
 #include "verification/sweep.hpp"
 
 namespace {
@@ -34,6 +35,27 @@ TEST_CASE("sedov reference: xi_0 against the published table", "[reference][sedo
     INFO("d = " << row.d << ", gamma = " << row.gamma << ": xi_0 = " << s.xi0());
     CHECK(std::abs(s.xi0() - row.xi0) < 5e-5 * row.xi0);
   }
+}
+
+TEST_CASE("sedov: the exact kinetic share and the thermal share add up to the blast's energy", "[reference][sedov]") {
+  // The thermal share sigma_d alpha^2 xi_0^(d+2) int_0^1 h / (gamma - 1) xi^(d-1) dxi, summed here
+  // on its own grid (midpoint, 2 10^5 cells): with the kinetic share it must give the energy
+  // integral's 1, to the tabulation's accuracy (1e-4: the profiles are linear between points).
+  for (const int d : {2, 3})
+    for (const double gamma : {1.4, 5.0 / 3.0}) {
+      const reference::Sedov s(d, gamma);
+      const double sigma = d == 2 ? 2.0 * M_PI : 4.0 * M_PI, alpha = 2.0 / (d + 2);
+      double thermal = 0.0;
+      for (int k = 0; k < 200000; ++k) {
+        const double xi = (k + 0.5) / 200000;
+        thermal += s.h(xi) / (gamma - 1.0) * std::pow(xi, d - 1) / 200000;
+      }
+      thermal *= sigma * alpha * alpha * std::pow(s.xi0(), d + 2);
+      const double kinetic = sphv::sedov::kinetic_share(s, d);
+      INFO("d = " << d << ", gamma = " << gamma << ": kinetic " << kinetic << ", thermal " << thermal);
+      CHECK(kinetic > 0.1);
+      CHECK(std::abs(kinetic + thermal - 1.0) < 1e-4);
+    }
 }
 
 TEST_CASE("sedov reference: jump conditions and centre behaviour", "[reference][sedov]") {
