@@ -102,7 +102,7 @@ def row_reason(s, row):
     if row["outcome"] == "known failure":
         return known_text(row)
     bounds = [c["name"] for c in checks_on(s, e) if c.get("kind", "verification") == "verification"
-              and c["name"] != f"order_{e}" and c["pass"]]
+              and c["name"] not in (f"order_{e}", f"order_resolved_{e}") and c["pass"]]
     return "order in band; bounds: " + ", ".join(bounds) if bounds else "order in band"
 
 

@@ -15,8 +15,10 @@ namespace sphv {
 namespace {
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 
-// Order checks of the claims: the observed order within expected +- (band + 2 se); se is
-// unknown (taken as 0) with two levels, where the fit is exact. A known failure's check passes
+// Order checks of the claims: the observed order within expected +- (band + 2 se), and se at
+// most the band (a fit whose uncertainty exceeds the band cannot tell the claimed order from one
+// outside it, and 2 se would widen the window to more than three bands); se is unknown (taken
+// as 0) with two levels, where the fit is exact. A known failure's check passes
 // while the order stays outside expected +- band: a curve that levels off fits a power law
 // badly, and the standard error of that poor fit must not count as the claim coming true.
 std::vector<Check> order_checks(const Sweep& s) {
@@ -30,9 +32,14 @@ std::vector<Check> order_checks(const Sweep& s) {
                    "known failure (the order stays outside its band): " + fill_reason(claim.why, s) +
                        "; the variant [" + claim.experiment + "] converges",
                    Check::Kind::known_failure, name});
-    else
+    else {
       c.push_back({"order_" + name, o->second.p, claim.expected - width, claim.expected + width, claim.why,
                    Check::Kind::verification, name});
+      if (std::isfinite(o->second.se))
+        c.push_back({"order_resolved_" + name, o->second.se, 0.0, claim.band,
+                     "the order fit's standard error at most the claim's band (the levels determine the order)",
+                     Check::Kind::verification, name});
+    }
   }
   return c;
 }
@@ -62,7 +69,7 @@ std::vector<Row> rows_of(const Sweep& s) {
     });
     const bool ordered = order_check != on.end();
     const bool bounded = std::any_of(on.begin(), on.end(), [&](const Check* c) {
-      return c->kind == Check::Kind::verification && c->name != "order_" + e;
+      return c->kind == Check::Kind::verification && c->name != "order_" + e && c->name != "order_resolved_" + e;
     });
     const auto reporting = std::count_if(s.runs.begin(), s.runs.end(), [&](const Result& r) { return r.errors.count(e) > 0; });
     const auto claim = s.claims.find(e);

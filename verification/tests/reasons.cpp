@@ -110,3 +110,39 @@ TEST_CASE("a known failure is its own outcome while it fails, and fails once its
   }
   sphv::set_baseline_dir(baselines);
 }
+
+TEST_CASE("a claimed order verifies only when its fit resolves the band", "[reasons]") {
+  const auto baselines = sphv::baseline_dir();
+  sphv::set_baseline_dir(std::filesystem::temp_directory_path() / "sphv-no-baselines");
+  // Noh 1D at hfact 2 claims shock_speed at order 1 +- 0.25; three levels whose fit has order 1.
+  auto runs = [](double e100, double e200, double e400) {
+    std::vector<sphv::Result> out;
+    for (auto [n, e] : {std::pair{100L, e100}, std::pair{200L, e200}, std::pair{400L, e400}}) {
+      sphv::Result r;
+      r.case_name = "noh";
+      r.params = {{"n", n}, {"hfact", 2.0}};
+      r.verdict = "stable";
+      r.errors = {{"shock_speed", e}};
+      r.extra = {{"shock_front_found", true}};
+      out.push_back(r);
+    }
+    return out;
+  };
+  SECTION("a straight line: se 0, the order check decides") {
+    const sphv::Sweep s = sphv::summarise(sphv::find_case("noh"), {"hfact=2"}, {100, 200, 400}, runs(0.04, 0.02, 0.01));
+    const auto it = std::find_if(s.checks.begin(), s.checks.end(), [](const sphv::Check& c) { return c.name == "order_resolved_shock_speed"; });
+    REQUIRE(it != s.checks.end());
+    CHECK(it->pass());
+    INFO(row_of(s, "shock_speed").why);
+    CHECK(row_of(s, "shock_speed").why.find("order_") == std::string::npos);
+  }
+  SECTION("the same fitted order from scattered errors (se 0.76 > band 0.25): fail") {
+    const sphv::Sweep s = sphv::summarise(sphv::find_case("noh"), {"hfact=2"}, {100, 200, 400}, runs(0.04, 0.008, 0.01));
+    REQUIRE(s.observed_order.at("shock_speed").p == Approx(1.0).margin(1e-9));
+    CHECK(s.observed_order.at("shock_speed").se > 0.25);
+    const sphv::Row& r = row_of(s, "shock_speed");
+    CHECK(r.outcome == "fail");
+    CHECK(r.why.find("order_resolved_shock_speed") != std::string::npos);
+  }
+  sphv::set_baseline_dir(baselines);
+}
