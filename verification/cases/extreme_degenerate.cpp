@@ -3,8 +3,9 @@
 // m W(0, h) with h at the cap h_max (sph/density/fixed_neighbours.hpp), and it must stay at rest.
 // kind = coincident: a periodic 2D lattice at rest with one particle duplicated on top of
 // another (r_ij = 0, grad W = 0). kind = contrast: a 1D periodic gas at rest in pressure
-// equilibrium whose density jumps by `contrast` (masses, same spacing); the exact solution is
-// rest and uniform pressure, the error is the spurious motion and pressure blip at the contacts.
+// equilibrium whose density jumps by `contrast` (masses, same spacing), or changes by it smoothly
+// over `contact_width`; the exact solution is rest and uniform pressure, the error is the spurious
+// motion and pressure blip at the contacts.
 #include <cmath>
 
 #include "verification/case.hpp"
@@ -68,15 +69,23 @@ Result coincident(const Params& prm, const extreme::Method& m) {
   return r;
 }
 
+// The density of the contact set-up: 1 outside [1/4, 3/4), 1 / contrast inside; with a width w > 0
+// ln rho falls smoothly, ln rho = -ln(contrast) (tanh((x - 1/4) / w) - tanh((x - 3/4) / w)) / 2,
+// a profile the kernel resolves once h << w (the jump at w = 0 is unresolved at every n).
+double contact_density(double x, double contrast, double w) {
+  if (w == 0.0) return x >= 0.25 && x < 0.75 ? 1.0 / contrast : 1.0;
+  return std::exp(-std::log(contrast) * 0.5 * (std::tanh((x - 0.25) / w) - std::tanh((x - 0.75) / w)));
+}
+
 Result contrast(const Params& prm, const extreme::Method& m) {
   const int n = static_cast<int>(prm.integer("n"));
-  const double R = prm.real("contrast");
+  const double R = prm.real("contrast"), w = prm.real("contact_width");
   sph::Box<1> box = sph::unit_box<1>(true);
   sph::Particles<1> p = sph::lattice<1>(n, box, 1.0, m.hfact);
   for (std::size_t i = 0; i < p.size(); ++i) {
-    const bool light = p.x[i][0] >= 0.25 && p.x[i][0] < 0.75;
-    p.m[i] /= light ? R : 1.0;
-    p.u[i] = 1.0 / ((m.gamma - 1.0) * (light ? 1.0 / R : 1.0));  // p = 1 everywhere
+    const double rho = contact_density(p.x[i][0], R, w);
+    p.m[i] *= rho;
+    p.u[i] = 1.0 / ((m.gamma - 1.0) * rho);  // p = 1 everywhere
   }
   auto [out, r] = evolve(p, box, m, 0.45, prm.real("t_end"));
   r.extra = {{"steps", out.steps}, {"t_reached", out.t}};
@@ -114,7 +123,8 @@ std::vector<Check> gates(const Sweep& s) {
       c.push_back({level + "_at_rest", r.errors.at("speed"), 0.0, 0.0, "no neighbour, no force", Check::Kind::verification,
                    "speed"});
     }
-    if (kind == "contrast" && r.verdict == "stable" && s.levels[k] == 16) {  // the measured level
+    const bool smooth = kind == "contrast" && find_case(s.case_name).parse(s.settings).real("contact_width") > 0.0;
+    if (kind == "contrast" && !smooth && r.verdict == "stable" && s.levels[k] == 16) {  // the measured level
       // Summation density (27) smooths the mass across the contact, so next to it the light gas
       // gets a density of the order of the dense one's and, with its u, a pressure of the order of
       // the contrast: the known SPH contact error (Agertz et al. 2007; Saitoh & Makino 2013), not
@@ -126,6 +136,14 @@ std::vector<Check> gates(const Sweep& s) {
                      std::string("SPH contact error at contrast 1e3: between half and 1.2x the measured ") +
                          std::to_string(measured),
                      Check::Kind::verification, name});
+    }
+    if (smooth && r.verdict == "stable" && k + 1 == s.runs.size()) {
+      // The finest level: at most the error measured at the finest quick level (n = 400, contrast
+      // 1e3, width 0.05, hfact 2, t = 0.005: max |p - 1| = 1.077e-2, max |v| / c = 2.745e-2) + 20 %;
+      // the errors fall at second order beyond it (2.7e-3, 7.0e-3 at n = 800).
+      for (const auto& [name, measured] : {std::pair{"pressure_blip", 1.077e-2}, std::pair{"speed_over_c_dense", 2.745e-2}})
+        c.push_back({level + "_" + name, r.errors.at(name), 0.0, 1.2 * measured,
+                     "resolved contact: at most the error measured at n = 400 + 20 %", Check::Kind::verification, name});
     }
   }
   return c;
@@ -140,23 +158,47 @@ const Registration reg{Case{
       std::vector<ParamSpec> ps = {integer_param("n", 16, "particles per side"),
                                    choice_param("kind", "isolated", "degenerate input", {"isolated", "coincident", "contrast"}),
                                    real_param("contrast", 1e3, "density ratio (kind = contrast)", 1.0),
+                                   real_param("contact_width", 0.0, "width of the contacts' smooth density profile (kind = contrast; 0: a jump)", -1e-300),
                                    real_param("t_end", 0.05, "end time", 0.0)};
       for (auto& q : extreme::method_params(5.0 / 3.0, 2.4)) ps.push_back(q);
       return ps;
     }(),
-    .levels = {.quick = {16}, .standard = {16, 32}, .full = {16, 32}},
-    .orders = [](const Params&) {
+    .levels = {.quick = {16, 32}, .standard = {16, 32}, .full = {16, 32}},
+    // The contact at rest converges once the kernel resolves it: with the jump smoothed over a
+    // width w >> h the summation density misses the profile by O((h / w)^2) (the kernel's second
+    // moment times (ln rho)''), and so do the pressure blip and the motion it drives (measured at
+    // w = 0.05, hfact 2, n = 100..1600: local orders 1.96-2.00 and 1.74-1.99). hfact 2: the 1D
+    // lattice sums are exact there; at 2.4 their error (2.7e-3 in the pressure at rest) floors
+    // the blip from n = 1600. The jump itself (w = 0) stays unresolved at every n at fixed h/dx:
+    // the light particles beside it sum the dense side's mass whatever n, a known failure with
+    // the smooth contact as the variant that converges.
+    .orders = [](const Params& p) {
       const std::string why = "a degenerate input has a verdict and exact values, not a convergence rate";
-      const std::string contact = "the SPH contact error is set by the density contrast at the contact, not by "
-                                  "the resolution: gated between a floor and a bound at one level";
+      const OrderClaim resolved{2.0, 0.3, "a contact the kernel resolves: the summation density misses the smooth "
+                                          "profile by O((h / w)^2), and so does the pressure (and the motion it drives)"};
+      if (p.real("contact_width") > 0.0)
+        return OrderClaims{{"speed_over_c_dense", resolved}, {"pressure_blip", resolved}};
+      const std::string jump = "the density jump is unresolved at every n (fixed h/dx): the light particles beside it "
+                               "sum the dense side's mass whatever n; pressure blip {pressure_blip} and speed "
+                               "{speed_over_c_dense} at {levels}";
+      const std::string smooth = "kind=contrast,t_end=0.005,contact_width=0.05,hfact=2";
       return OrderClaims{{"self_density", no_order(why)}, {"speed", no_order(why)},
-                         {"speed_over_c_dense", no_order(contact)}, {"pressure_blip", no_order(contact)}};
+                         {"speed_over_c_dense", known_failure(2.0, 0.3, jump, smooth)},
+                         {"pressure_blip", known_failure(2.0, 0.3, jump, smooth)}};
     },
     .error_defs = {{"self_density", "isolated particle: |rho - m W(0, h_max)| / (m W(0, h_max)), (49)"},
                    {"speed", "isolated particle: max |v| at t_end (exact 0: no neighbour, no force)"},
                    {"speed_over_c_dense", "contact at rest: max_i |v_i| / c of the dense side at t_end (exact 0)"},
                    {"pressure_blip", "contact at rest: max_i |p_i - 1| at t_end (exact p = 1 everywhere)"}},
-    .variants = {{"kind=isolated"}, {"kind=coincident"}, {"kind=contrast", "t_end=0.005"}},
+    .variants = {{"kind=isolated"},
+                 {"kind=coincident"},
+                 {"kind=contrast", "t_end=0.005"},
+                 {"kind=contrast", "t_end=0.005", "contact_width=0.05", "hfact=2"}},
+    .levels_for = [](const Params& p) {
+      if (p.real("contact_width") > 0.0)
+        return Levels{.quick = {200, 400}, .standard = {200, 400, 800}, .full = {200, 400, 800, 1600}};
+      return Levels{.quick = {16, 32}, .standard = {16, 32}, .full = {16, 32}};
+    },
     .validate = {},
     .run = run,
     .gates = gates,
