@@ -47,6 +47,11 @@ add_test(NAME ic_sound_wave_2d_swift COMMAND bash -c
   "$<TARGET_FILE:sphv> ic sound_wave --set dim=2 n=16 --out sound_ic.hdf5 --format swift && $<TARGET_FILE:sphv> convert --input sound_ic.hdf5 --out sound_ic.csv --format csv && test $(grep -vc '^#' sound_ic.csv) -eq 257 && echo PASS"
   WORKING_DIRECTORY ${_sdir})
 set_tests_properties(ic_sound_wave_2d_swift PROPERTIES PASS_REGULAR_EXPRESSION "sound_wave n=16: initial conditions written(.|\n)*PASS")
+# Its initial state scored at the file's time 0 against the reference: v_x exact.
+add_test(NAME ic_sound_wave_scored_at_t0 COMMAND bash -c
+  "$<TARGET_FILE:sphv> ic sound_wave --set n=16 A=1e-4 --out sound_ic1.hdf5 && $<TARGET_FILE:sphv> score sound_wave --snapshot sound_ic1.hdf5 --set A=1e-4 --out sound_ic1_score"
+  WORKING_DIRECTORY ${_sdir})
+set_tests_properties(ic_sound_wave_scored_at_t0 PROPERTIES PASS_REGULAR_EXPRESSION "t_end=0 \\(file: /Header Time\\)(.|\n)*L1_v=0.000000e\\+00, verdict: ok")
 # A wave of no amplitude, or one that steepens beyond the linear reference by t_end, is refused (exit 2).
 sphv_refuses(sound_wave_zero_amplitude run sound_wave --set A=0)
 sphv_refuses(sound_wave_nonlinear_amplitude run sound_wave --set A=0.01)

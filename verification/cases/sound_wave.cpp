@@ -66,7 +66,7 @@ Result run_dim(const Params& prm) {
   // The floor at the run's own h/dx: (50) sets the initial h (kept fixed) to its tolerance, 1e-3.
   r.extra["h_over_dx"] = h * n;
   r.extra["phase_speed_lattice"] = sound_wave::lattice_phase_speed_ratio<D>(h * n, m.gamma);
-  if (m.alpha > 0.0) {
+  if (m.alpha > 0.0 && out.t > 0.0) {
     // sph::ArtificialViscosity's eps and h_scale as extreme::evolve_gas sets them.
     const double rate = sound_wave::viscous_damping_rate<D>(m.alpha, w.sound_speed(), h, 1.0 / n, 0.01, 0.5, w.wave_number());
     const double measured = -std::log(f.amplitude) / out.t;
@@ -87,7 +87,7 @@ void validate(const Params& p) {
   if (n < 8) throw InputError("sound_wave: need n >= 8 particles per wavelength");
   const double A = p.real("A"), t_end = p.real("t_end");
   if (!(A > 0.0)) throw InputError("sound_wave: the amplitude A must be > 0, got " + p.text("A"));
-  if (!(t_end > 0.0)) throw InputError("sound_wave: t_end must be > 0");
+  if (!(t_end >= 0.0)) throw InputError("sound_wave: t_end must be >= 0 (0: score an initial state)");
   const double nl = sound_wave::wave(p).nonlinear_error(t_end);
   if (!(nl <= 0.01))
     throw InputError("sound_wave: A = " + p.text("A") + " is not a linear wave by t_end = " + p.text("t_end") +
