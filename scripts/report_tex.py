@@ -125,7 +125,7 @@ def convergence_caption(case, s, row):
             f"{expected_tex(row)} (dashed, through the finest point; band shaded); {outcome_tex(row)}.")
 
 
-HYDRO = ("sod", "sedov", "noh")  # the cases that verify the hydrodynamics: the section shows them first
+HYDRO = ("sod", "sedov", "noh", "sound_wave")  # the cases that verify the hydrodynamics: the section shows them first
 
 
 def run_caption(case, s, name):

@@ -14,6 +14,7 @@
 #include "verification/cases/sedov_setup.hpp"
 #include "verification/cases/sod_errors.hpp"
 #include "verification/cases/sod_simulate.hpp"
+#include "verification/cases/sound_wave_setup.hpp"
 #include "verification/snapshot/swift_ic.hpp"
 
 namespace sphv {
@@ -153,10 +154,20 @@ InitialState heat_ic(const Params& p, IcLayout layout) {
   });
 }
 
+// The displaced lattice in the periodic unit box [0, 1)^d (sound_wave_setup.hpp), v_x and u of
+// the wave, rho the wave's exact density (a run replaces it by the summation (27)); the unit box
+// is SWIFT's layout too.
+InitialState sound_wave_ic(const Params& p, IcLayout layout) {
+  return by_dimension(p, [&](auto dim) {
+    constexpr int D = decltype(dim)::value;
+    return placed(at_start(sound_wave::initial_particles<D>(p), p.real("gamma")), p.real("gamma"), layout, 0.0, 1.0);
+  });
+}
+
 const std::map<std::string, InitialConditions>& ics() {
   static const std::map<std::string, InitialConditions> m = {
       {"sod", tube_ic<1>}, {"sod2d", tube_ic<2>}, {"sod3d", tube_ic<3>}, {"sedov", sedov_ic},
-      {"noh", noh_ic},     {"evrard", evrard_ic}, {"heat", heat_ic}};
+      {"noh", noh_ic},     {"evrard", evrard_ic}, {"heat", heat_ic}, {"sound_wave", sound_wave_ic}};
   return m;
 }
 

@@ -1,6 +1,6 @@
 // The scorers of `sphv score`: each reads the columns its case needs from a snapshot and calls
 // the same error function as the case's own run (sod_errors.hpp, sedov_errors.hpp,
-// noh_errors.hpp, evrard_errors.hpp, heat_errors.hpp, gravity_compare.hpp).
+// noh_errors.hpp, evrard_errors.hpp, heat_errors.hpp, sound_wave_errors.hpp, gravity_compare.hpp).
 #include <cmath>
 #include <stdexcept>
 
@@ -13,6 +13,7 @@
 #include "verification/cases/noh_errors.hpp"
 #include "verification/cases/sedov_errors.hpp"
 #include "verification/cases/sod_errors.hpp"
+#include "verification/cases/sound_wave_errors.hpp"
 #include "verification/gravity_input.hpp"
 #include "verification/score.hpp"
 
@@ -133,6 +134,34 @@ Result score_noh(const Params& prm, const Snapshot& s) {
   return r;
 }
 
+// The wave along x with one wavelength across the box: the file's box along x where it states
+// one ([lo, hi): wavelength hi - lo, phase from lo), else the unit box [0, 1) of sphv's layout.
+Result score_sound_wave(const Params& prm, const Snapshot& s) {
+  const std::string who = "sound_wave";
+  positive(s, "rho", who);
+  positive(s, "m", who);
+  double lo = 0.0, L = 1.0;
+  std::string from = "the unit box [0, 1): the file states no box";
+  if (const auto box = s.stated.find("box"); box != s.stated.end() && box->second.value.size() >= 2) {
+    lo = box->second.value[0], L = box->second.value[1] - box->second.value[0];
+    from = "the file's box along x (" + box->second.from + ")";
+  }
+  if (!(L > 0.0)) throw InputError(s.path.string() + ": sound_wave needs a box of positive length along x");
+  const reference::AcousticWave w(prm.real("rho0"), prm.real("c_s"), prm.real("gamma"), prm.real("A"), L);
+  Result r;
+  by_dimension(prm, [&](auto dim) {
+    constexpr int D = decltype(dim)::value;
+    auto x = vectors<D>(s, "", who);
+    for (auto& xi : x) xi[0] -= lo;
+    sound_wave::measure<D>(r, x, vectors<D>(s, "v", who), s.at("m", who), s.at("rho", who), prm.real("t_end"), w,
+                           prm.real("A"), prm.integer("n"));
+    return r;
+  });
+  r.extra["wavelength"] = L;
+  r.extra["wavelength_from"] = from;
+  return r;
+}
+
 Result score_evrard(const Params& prm, const Snapshot& s) {
   const std::string who = "evrard";
   positive(s, "rho", who);
@@ -214,6 +243,7 @@ const std::map<std::string, Scorer>& scorers() {
       {"sedov", {"t", score_sedov, sedov::end_time, Resolution::per_length, real_gamma}},
       {"noh", {"t_end", score_noh, real_t_end, Resolution::per_length, real_gamma}},
       {"evrard", {"t_end", score_evrard, real_t_end, Resolution::count, real_gamma}},
+      {"sound_wave", {"t_end", score_sound_wave, real_t_end, Resolution::per_length, real_gamma}},
       {"heat", {"t_end", score_heat, real_t_end}},
       {"gravity", {"", score_gravity, {}}}};
   return s;

@@ -42,6 +42,23 @@ set_tests_properties(ic_sedov_3d_swift PROPERTIES PASS_REGULAR_EXPRESSION "sedov
 add_test(NAME ic_noh_h5part COMMAND sphv ic noh --set dim=2 n=20 --out ${_sdir}/noh_ic.h5 --format h5part)
 set_tests_properties(ic_noh_h5part PROPERTIES PASS_REGULAR_EXPRESSION "noh n=20: initial conditions written")
 sphv_refuses(ic_noh_too_many_particles ic noh --set dim=3 --out ${_sdir}/noh_ic.csv)
+# The sound wave's IC in SWIFT's layout (the periodic unit box): n^2 particles, read back.
+add_test(NAME ic_sound_wave_2d_swift COMMAND bash -c
+  "$<TARGET_FILE:sphv> ic sound_wave --set dim=2 n=16 --out sound_ic.hdf5 --format swift && $<TARGET_FILE:sphv> convert --input sound_ic.hdf5 --out sound_ic.csv --format csv && test $(grep -vc '^#' sound_ic.csv) -eq 257 && echo PASS"
+  WORKING_DIRECTORY ${_sdir})
+set_tests_properties(ic_sound_wave_2d_swift PROPERTIES PASS_REGULAR_EXPRESSION "sound_wave n=16: initial conditions written(.|\n)*PASS")
+# Its initial state scored at the file's time 0 against the reference: v_x exact.
+add_test(NAME ic_sound_wave_scored_at_t0 COMMAND bash -c
+  "$<TARGET_FILE:sphv> ic sound_wave --set n=16 A=1e-4 --out sound_ic1.hdf5 && $<TARGET_FILE:sphv> score sound_wave --snapshot sound_ic1.hdf5 --set A=1e-4 --out sound_ic1_score"
+  WORKING_DIRECTORY ${_sdir})
+set_tests_properties(ic_sound_wave_scored_at_t0 PROPERTIES PASS_REGULAR_EXPRESSION "t_end=0 \\(file: /Header Time\\)(.|\n)*L1_v=0.000000e\\+00, verdict: ok")
+# A wave of no amplitude, or one that steepens beyond the linear reference by t_end, is refused (exit 2).
+sphv_refuses(sound_wave_zero_amplitude run sound_wave --set A=0)
+sphv_refuses(sound_wave_nonlinear_amplitude run sound_wave --set A=0.01)
+add_test(NAME sound_wave_bad_amplitude_exit_2 COMMAND bash -c
+  "$<TARGET_FILE:sphv> run sound_wave --set A=-1e-6 --out sw_refused; a=$?; $<TARGET_FILE:sphv> ic sound_wave --set A=0.01 --out sw.csv; b=$?; test $a -eq 2 && test $b -eq 2 && test ! -e sw.csv && echo PASS"
+  WORKING_DIRECTORY ${_sdir})
+set_tests_properties(sound_wave_bad_amplitude_exit_2 PROPERTIES PASS_REGULAR_EXPRESSION "PASS")
 # The format follows the file's extension (.hdf5/.h5 SWIFT, .csv CSV) or is refused when they
 # contradict; SWIFT's tube has its interfaces where SWIFT's example puts them.
 add_test(NAME ic_format_from_extension COMMAND bash -c

@@ -5,12 +5,14 @@
 #include <unistd.h>
 
 #include <catch2/catch.hpp>
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <functional>
 
 #include "reference/riemann.hpp"
+#include "reference/sound_wave.hpp"
 #include "sph/gravity/tree_gravity.hpp"
 #include "verification/cases/gravity_compare.hpp"
 #include "verification/cases/gravity_models.hpp"
@@ -95,6 +97,10 @@ TEST_CASE("score: sedov 2D round trip reproduces shock_radius and L1_rho", "[sco
 }
 
 TEST_CASE("score: noh 1D round trip", "[score]") { require_round_trip("noh", {"n=100"}, {"csv", "swift"}); }
+
+TEST_CASE("score: sound_wave 2D round trip", "[score][sound]") {
+  require_round_trip("sound_wave", {"n=16", "dim=2"}, {"csv", "swift", "h5part"});
+}
 
 TEST_CASE("score: heat 1D round trip (spatial_gauss)", "[score]") { require_round_trip("heat", {"n=16"}, {"csv"}); }
 
@@ -414,7 +420,7 @@ double total(const std::vector<double>& v) {
 }
 }  // namespace
 
-TEST_CASE("ic: sedov, noh, evrard and heat write the state their runs start from", "[score]") {
+TEST_CASE("ic: sedov, noh, sound_wave, evrard and heat write the state their runs start from", "[score]") {
   SECTION("sedov 2D: the lattice at rest in SWIFT's box [0, 1]^2, E on top of u_ambient") {
     const auto [ic, run] = ic_and_run("sedov", {"n=16"}, {"n=16"}, "swift");
     const double u_ambient = find_case("sedov").parse({}).real("u_ambient");
@@ -438,6 +444,21 @@ TEST_CASE("ic: sedov, noh, evrard and heat write the state their runs start from
       CHECK(std::abs(x) < R0);
       CHECK(ic.at("vx", "test")[i] == (x > 0 ? -1.0 : 1.0));
       CHECK(ic.at("rho", "test")[i] == 1.0);
+    }
+  }
+  SECTION("sound_wave 1D: the displaced lattice carries the wave's mass, velocity and energy") {
+    const auto [ic, run] = ic_and_run("sound_wave", {"n=32", "A=1e-3"}, {"n=32"}, "swift");
+    CHECK(ic.size() == 32);
+    CHECK(total(ic.at("m", "test")) == Approx(1.0).epsilon(1e-12));  // rho0 times the box's length
+    const reference::AcousticWave w(1.0, 1.0, 5.0 / 3.0, 1e-3, 1.0);
+    for (std::size_t i = 0; i < ic.size(); ++i) {
+      const double x = ic.at("x", "test")[i], x0 = (i + 0.5) / 32.0;
+      CHECK(x >= 0.0);
+      CHECK(x < 1.0);
+      // The mass left of the particle, int_0^x rho, is its lattice coordinate's x0 (uniform masses).
+      CHECK(x + 1e-3 / (2.0 * M_PI) * (1.0 - std::cos(2.0 * M_PI * x)) == Approx(x0).epsilon(1e-14));
+      CHECK(ic.at("vx", "test")[i] == Approx(w.at(x, 0.0).v).epsilon(1e-14));
+      CHECK(ic.at("u", "test")[i] == Approx(w.at(x, 0.0).u).epsilon(1e-14));
     }
   }
   SECTION("evrard: unit mass in the unit sphere at rest, M(<r) = r^2") {
