@@ -43,4 +43,16 @@ void with_kernel(const std::string& name, F&& f) {
   with_kernel<D>(name, std::forward<F>(f), Kernels{});
 }
 
+// f.template operator()<K>() for the kernel template K named `name` (every dimension at once, as
+// K<1>, K<2>, K<3>); throws std::invalid_argument as with_kernel.
+template <template <int> class... K, class F>
+void with_kernel_family(const std::string& name, F&& f, KernelList<K...>) {
+  if (((name == K<1>::name ? (f.template operator()<K>(), true) : false) || ...)) return;
+  with_kernel<1>(name, [](auto) {}, KernelList<K...>{});  // throws, naming the choices
+}
+template <class F>
+void with_kernel_family(const std::string& name, F&& f) {
+  with_kernel_family(name, std::forward<F>(f), Kernels{});
+}
+
 }  // namespace sph
