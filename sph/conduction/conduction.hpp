@@ -35,9 +35,11 @@ struct BrookshawConduction {
 };
 
 // Two-pass flux form: prepare() computes grad T = -F / K by (56) or (57); the pair loop takes
-// its divergence by (58) or (59).
-template <int D, class Form>
+// its divergence by (58) or (59). K: the kernel of both passes (the pair loop's is the scene's,
+// Scene::Kernel, which this term names).
+template <int D, class Form, class K = CubicSpline<D>>
 struct TwoPassConduction {
+  using kernel = K;
   static constexpr Writes writes{.dudt = true};
   ConductionParams k;
   std::vector<Vec<D>> gradT;
@@ -46,7 +48,7 @@ struct TwoPassConduction {
     std::vector<double> T(n);
 #pragma omp parallel for if (n >= parallel_threshold)
     for (std::size_t i = 0; i < n; ++i) T[i] = p.u[i] / k.c_v;
-    gradT = sph_gradient<D, Form>(p, T, nb);
+    gradT = sph_gradient<D, Form, K>(p, T, nb);
   }
   void pair(const Particles<D>& p, PairSums<D>& s, const Pair<D>& pr) const {
     s.dudt += k.K / p.rho[pr.i] * Form::outer(p.rho[pr.i]) * divergence_pair<D, Form>(p, gradT, pr.i, pr.j, pr.gradW);

@@ -37,13 +37,13 @@ struct SmoothingLengthOutcome {
 // returned h. One neighbour search serves the whole iteration while the h fit its padding
 // (search/verlet_list.hpp: the particles stand still), and `lists`, kept by a caller that iterates
 // after every step, serves the next calls while the particles stay within it. Throws
-// std::invalid_argument from the search if h exceeds half a periodic box.
-template <int D>
+// std::invalid_argument from the search if h exceeds half a periodic box. K: the kernel of (27).
+template <int D, class K = CubicSpline<D>>
 SmoothingLengthOutcome smoothing_length_iterate(Particles<D>& p, const Box<D>& box, const SmoothingLengthControl& c,
                                                 VerletList<D>& lists) {
   SmoothingLengthOutcome out;
   Components<D> xs;  // kept over the iterations
-  auto density = [&] { density_summation<D>(p, lists.update(p.x, p.h, box), box, xs); };
+  auto density = [&] { density_summation<D, K>(p, lists.update(p.x, p.h, box), box, xs); };
   for (out.iterations = 1; out.iterations <= c.max_iterations; ++out.iterations) {
     density();
     double change = 0.0;
@@ -67,10 +67,10 @@ SmoothingLengthOutcome smoothing_length_iterate(Particles<D>& p, const Box<D>& b
   return out;
 }
 
-template <int D>
+template <int D, class K = CubicSpline<D>>
 SmoothingLengthOutcome smoothing_length_iterate(Particles<D>& p, const Box<D>& box, const SmoothingLengthControl& c) {
   VerletList<D> lists(c.skin);
-  return smoothing_length_iterate(p, box, c, lists);
+  return smoothing_length_iterate<D, K>(p, box, c, lists);
 }
 
 }  // namespace sph

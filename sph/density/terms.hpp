@@ -7,11 +7,13 @@ namespace sph {
 // Density methods of 9.2 as scene terms. List the density term first: the equation of state
 // and the force terms read rho.
 
-// Summation (27), recomputed from the positions before every pair loop.
-template <int D>
+// Summation (27) with the kernel K, recomputed from the positions before every pair loop. The
+// scene's pair loop takes its grad W from the same K (Scene::Kernel).
+template <int D, class K = CubicSpline<D>>
 struct SummationDensity {
+  using kernel = K;
   Components<D> xs;  // the positions' columns, kept (Scene::xs)
-  void prepare(Particles<D>& p, const Neighbourhood<D>& nb) { density_summation<D>(p, nb.list, nb.box, xs); }
+  void prepare(Particles<D>& p, const Neighbourhood<D>& nb) { density_summation<D, K>(p, nb.list, nb.box, xs); }
 };
 
 // Continuity equation: rho is evolved by the integrator from drho/dt.

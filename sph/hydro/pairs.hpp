@@ -69,13 +69,63 @@ struct PairBatch {
   double dx[D][size], r[size], h[size], g[size];
 };
 
+// The batch's geometry in the copy of one instruction set (pair_geometry below).
+namespace detail {
+template <int D, class K>
+inline void batch_geometry(std::size_t i, const int* js, int nb, const Components<D>& xs,
+                           const std::vector<double>& h, const Vec<D>& L, const Vec<D>& wrap, PairBatch<D>& b) {
+  const double hi = h[i];
+#pragma omp simd
+  for (int t = 0; t < nb; ++t) {
+    const int j = js[t];
+    double r2 = 0.0;
+#pragma GCC unroll 3
+    for (int d = 0; d < D; ++d) {
+      b.dx[d][t] = min_image(xs[d][i] - xs[d][j], L[d], wrap[d]);
+      r2 += b.dx[d][t] * b.dx[d][t];
+    }
+    b.r[t] = std::sqrt(r2);
+    b.h[t] = h_ij(hi, h[j]);
+    b.g[t] = b.r[t] > 0.0 ? K::dWdr(b.r[t], b.h[t]) / b.r[t] : 0.0;
+  }
+}
+
+#ifdef SPH_AVX2_COPY
+template <int D, class K>
+[[gnu::target("avx2,fma"), gnu::flatten]] void batch_geometry_avx2(std::size_t i, const int* js, int nb,
+                                                                   const Components<D>& xs,
+                                                                   const std::vector<double>& h, const Vec<D>& L,
+                                                                   const Vec<D>& wrap, PairBatch<D>& b) {
+  batch_geometry<D, K>(i, js, nb, xs, h, L, wrap, b);
+}
+template <int D, class K>
+[[gnu::target(SPH_AVX512_TARGET), gnu::flatten]] void batch_geometry_avx512(std::size_t i, const int* js, int nb,
+                                                                          const Components<D>& xs,
+                                                                          const std::vector<double>& h,
+                                                                          const Vec<D>& L, const Vec<D>& wrap,
+                                                                          PairBatch<D>& b) {
+  batch_geometry<D, K>(i, js, nb, xs, h, L, wrap, b);
+}
+#endif
+}  // namespace detail
+
 // Fills b for the pairs (i, js[t]), t < nb, without a branch, in a loop the compiler vectorises
 // (gathers of x_j and h_j, the kernel's pieces as masks); in the copy of path (loop_path,
-// core/isa.hpp). Compiled once in hydro/pair_geometry.cpp rather than inlined into every
-// scene's pair loop: the scenes do not change it, and the build would compile it again in each.
+// core/isa.hpp). The cubic spline's copies are compiled once, in hydro/pair_geometry.cpp, rather
+// than inlined into every scene's pair loop (the scenes do not change them, and the build would
+// compile them again in each); another kernel's are compiled where a scene selects it.
 template <int D, class K>
-void pair_geometry(IsaPath path, std::size_t i, const int* js, int nb, const Components<D>& xs,
-                   const std::vector<double>& h, const Vec<D>& L, const Vec<D>& wrap, PairBatch<D>& b);
+void pair_geometry([[maybe_unused]] IsaPath path, std::size_t i, const int* js, int nb, const Components<D>& xs,
+                   const std::vector<double>& h, const Vec<D>& L, const Vec<D>& wrap, PairBatch<D>& b) {
+#ifdef SPH_AVX2_COPY
+  if constexpr (D == 3)  // the copies of loop_path (core/isa.hpp)
+    if (path == IsaPath::avx512) return detail::batch_geometry_avx512<D, K>(i, js, nb, xs, h, L, wrap, b);
+  if constexpr (D >= 2)
+    if (path != IsaPath::portable) return detail::batch_geometry_avx2<D, K>(i, js, nb, xs, h, L, wrap, b);
+#endif
+  detail::batch_geometry<D, K>(i, js, nb, xs, h, L, wrap, b);
+}
+
 extern template void pair_geometry<1, CubicSpline<1>>(IsaPath, std::size_t, const int*, int, const Components<1>&,
                                                       const std::vector<double>&, const Vec<1>&, const Vec<1>&,
                                                       PairBatch<1>&);
@@ -205,7 +255,7 @@ void for_each_particle(std::size_t n, const NeighbourList& nl, Visit&& visit) {
 }
 
 // The pair loop over every particle i (pairs_of), with the kernel K of grad W.
-template <int D, class Acc, class F, class Store, class K = CubicSpline<D>>
+template <int D, class Acc, class K = CubicSpline<D>, class F, class Store>
 void sum_over_pairs(const std::vector<Vec<D>>& x, const std::vector<double>& h, const NeighbourList& nl,
                     const Box<D>& box, F&& f, Store&& store) {
   const Vec<D> L = box.length(), wrap = box.wrap_factor();
@@ -227,12 +277,13 @@ void sum_weights_over_pairs(const std::vector<Vec<D>>& x, const std::vector<doub
 }
 
 // Calls f(i, j, r_ij, |r_ij|, h_ij) for every interacting pair (|r_ij| < h_ij); f may only write to i's own
-// outputs (the pair loop above without an accumulator).
-template <int D, class F>
+// outputs (the pair loop above without an accumulator). K: the kernel whose support (every kernel's
+// is h) and grad W the loop computes.
+template <int D, class K = CubicSpline<D>, class F>
 void for_each_pair(const std::vector<Vec<D>>& x, const std::vector<double>& h, const NeighbourList& nl,
                    const Box<D>& box, F&& f) {
   struct None {};
-  sum_over_pairs<D, None>(
+  sum_over_pairs<D, None, K>(
       x, h, nl, box,
       [&](None&, std::size_t i, int j, const Vec<D>& rij, double r, double hij, double) { f(i, j, rij, r, hij); },
       [](std::size_t, const None&) {});

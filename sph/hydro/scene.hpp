@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <tuple>
+#include <type_traits>
 #include <vector>
 
 #include "sph/core/particles.hpp"
@@ -84,7 +85,36 @@ struct WidestLoopCopy {
   static constexpr IsaPath widest_loop_copy = widest;
 };
 
-// A scene lists its physical terms as types. A term may provide any of
+// A term that only names its scene's kernel (sph/kernel/kernels.hpp), for scenes none of whose
+// other terms names one (a term that evaluates W itself, e.g. SummationDensity, names its own).
+template <class K>
+struct WithKernel {
+  using kernel = K;
+};
+
+// The kernel of a scene: the one its terms name (`using kernel`), all the same one; the cubic
+// spline (6) when none does.
+template <class T>
+struct KernelOf {
+  using type = void;
+};
+template <class T>
+  requires requires { typename T::kernel; }
+struct KernelOf<T> {
+  using type = typename T::kernel;
+};
+template <int D, class... Terms>
+struct SceneKernel {
+  using type = CubicSpline<D>;
+};
+template <int D, class T, class... Rest>
+struct SceneKernel<D, T, Rest...> {
+  using own = typename KernelOf<std::remove_cvref_t<T>>::type;
+  using type = std::conditional_t<std::is_void_v<own>, typename SceneKernel<D, Rest...>::type, own>;
+};
+
+// A scene lists its physical terms as types, and its kernel through them (SceneKernel). A term may
+// provide any of
 //   void prepare(Particles<D>&, const Neighbourhood<D>&)                   before the pair loop
 //   void pair(const Particles<D>&, PairSums<D>&, const Pair<D>&)           inside it (adds the pair's share)
 //   void finish(const Particles<D>&, const Neighbourhood<D>&, Derivatives<D>&)  after it
@@ -95,6 +125,11 @@ struct WidestLoopCopy {
 template <int D, class... Terms>
 struct Scene {
   static constexpr int dim = D;
+  // The kernel of grad W in the pair loop (SceneKernel).
+  using Kernel = typename SceneKernel<D, Terms...>::type;
+  static_assert(((std::is_void_v<typename KernelOf<std::remove_cvref_t<Terms>>::type> ||
+                  std::is_same_v<typename KernelOf<std::remove_cvref_t<Terms>>::type, Kernel>) && ...),
+                "the terms of a scene name one kernel");
   std::tuple<Terms...> terms;
   // The positions and velocities one array per dimension, as the pair loop gathers them: buffers
   // kept from one evaluation to the next. Allocated afresh, a large run's columns would go back to
@@ -169,7 +204,7 @@ struct Scene {
     for (int k = 0; k < D; ++k) vi[k] = vs[k][i];
     for (int t0 = 0; t0 < count; t0 += b.size) {
       const int nb = std::min(count - t0, b.size);
-      pair_geometry<D, CubicSpline<D>>(path, i, js + t0, nb, xs, p.h, L, wrap, b);
+      pair_geometry<D, Kernel>(path, i, js + t0, nb, xs, p.h, L, wrap, b);
 #pragma omp simd
       for (int t = 0; t < nb; ++t) share(t, i, js[t0 + t], p, vi, vs, b, sh);
       // Adding a share of +0 or -0 (0 times the pair's value) leaves a sum that starts at +0

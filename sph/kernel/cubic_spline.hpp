@@ -1,5 +1,6 @@
 #pragma once
 #include <algorithm>
+#include <array>
 #include <numbers>
 
 #include "sph/core/vec.hpp"
@@ -8,9 +9,13 @@ namespace sph {
 
 // Cubic spline kernel of the chapter, eqs (6)-(8). h is the full support radius:
 // W = 0 for r > h (not Monaghan's 2h convention, see errata).
+// The interface every kernel of sph/kernel/kernels.hpp has: name, knots (the q = r/h where a
+// piece ends, 1 last: quadrature and the kernel case split there), sigma, W, dWdr, gradW.
 template <int D>
 struct CubicSpline {
   static_assert(D >= 1 && D <= 3);
+  static constexpr const char* name = "cubic_spline";
+  static constexpr std::array<double, 2> knots{0.5, 1.0};
   // Normalisation (7): 4/3, 40/(7 pi), 8/pi.
   static constexpr double sigma = D == 1   ? 4.0 / 3.0
                                   : D == 2 ? 40.0 / (7.0 * std::numbers::pi)

@@ -44,11 +44,12 @@ struct DifferenceForm {
   }
 };
 
-template <int D, class Form>
+// K, here and below: the kernel (sph/kernel/kernels.hpp).
+template <int D, class Form, class K = CubicSpline<D>>
 std::vector<Vec<D>> sph_gradient(const Particles<D>& p, const std::vector<double>& T, const Neighbourhood<D>& nb) {
   std::vector<Vec<D>> g(p.size(), Vec<D>::Zero());
-  for_each_pair<D>(p.x, p.h, nb.list, nb.box, [&](std::size_t i, int j, const Vec<D>& rij, double r, double h) {
-    g[i] += Form::weight(p.m[j], T[i], T[j], p.rho[i], p.rho[j]) * CubicSpline<D>::gradW(rij, r, h);
+  for_each_pair<D, K>(p.x, p.h, nb.list, nb.box, [&](std::size_t i, int j, const Vec<D>& rij, double r, double h) {
+    g[i] += Form::weight(p.m[j], T[i], T[j], p.rho[i], p.rho[j]) * K::gradW(rij, r, h);
   });
   const std::size_t n = p.size();
 #pragma omp parallel for if (n >= parallel_threshold)
@@ -63,12 +64,12 @@ double divergence_pair(const Particles<D>& p, const std::vector<Vec<D>>& G, std:
 }
 
 // Two-pass Laplacian: the divergence (58/59) of the gradient (56/57).
-template <int D, class Form>
+template <int D, class Form, class K = CubicSpline<D>>
 std::vector<double> two_pass_laplacian(const Particles<D>& p, const std::vector<double>& T, const Neighbourhood<D>& nb) {
-  const auto G = sph_gradient<D, Form>(p, T, nb);
+  const auto G = sph_gradient<D, Form, K>(p, T, nb);
   std::vector<double> lap(p.size(), 0.0);
-  for_each_pair<D>(p.x, p.h, nb.list, nb.box, [&](std::size_t i, int j, const Vec<D>& rij, double r, double h) {
-    lap[i] += divergence_pair<D, Form>(p, G, i, j, CubicSpline<D>::gradW(rij, r, h));
+  for_each_pair<D, K>(p.x, p.h, nb.list, nb.box, [&](std::size_t i, int j, const Vec<D>& rij, double r, double h) {
+    lap[i] += divergence_pair<D, Form>(p, G, i, j, K::gradW(rij, r, h));
   });
   const std::size_t n = p.size();
 #pragma omp parallel for if (n >= parallel_threshold)
@@ -76,21 +77,22 @@ std::vector<double> two_pass_laplacian(const Particles<D>& p, const std::vector<
   return lap;
 }
 
-template <int D>
+template <int D, class K = CubicSpline<D>>
 std::vector<double> brookshaw_laplacian(const Particles<D>& p, const std::vector<double>& T, const Neighbourhood<D>& nb) {
   std::vector<double> lap(p.size(), 0.0);
-  for_each_pair<D>(p.x, p.h, nb.list, nb.box, [&](std::size_t i, int j, const Vec<D>& rij, double r, double h) {
-    lap[i] += brookshaw_pair<D>(p.m[j] / p.rho[j], T[i], T[j], rij, r, CubicSpline<D>::gradW(rij, r, h));
+  for_each_pair<D, K>(p.x, p.h, nb.list, nb.box, [&](std::size_t i, int j, const Vec<D>& rij, double r, double h) {
+    lap[i] += brookshaw_pair<D>(p.m[j] / p.rho[j], T[i], T[j], rij, r, K::gradW(rij, r, h));
   });
   return lap;
 }
 
 // (67), 1D only: identical to (69) with D = 1 up to round-off.
-inline std::vector<double> brookshaw_laplacian_1d(const Particles<1>& p, const std::vector<double>& T,
-                                                  const Neighbourhood<1>& nb) {
+template <class K = CubicSpline<1>>
+std::vector<double> brookshaw_laplacian_1d(const Particles<1>& p, const std::vector<double>& T,
+                                           const Neighbourhood<1>& nb) {
   std::vector<double> lap(p.size(), 0.0);
-  for_each_pair<1>(p.x, p.h, nb.list, nb.box, [&](std::size_t i, int j, const Vec<1>& rij, double r, double h) {
-    lap[i] += brookshaw_pair_1d(p.m[j] / p.rho[j], T[i], T[j], rij[0], CubicSpline<1>::gradW(rij, r, h)[0]);
+  for_each_pair<1, K>(p.x, p.h, nb.list, nb.box, [&](std::size_t i, int j, const Vec<1>& rij, double r, double h) {
+    lap[i] += brookshaw_pair_1d(p.m[j] / p.rho[j], T[i], T[j], rij[0], K::gradW(rij, r, h)[0]);
   });
   return lap;
 }
@@ -98,14 +100,14 @@ inline std::vector<double> brookshaw_laplacian_1d(const Particles<1>& p, const s
 // Second-derivative tensor (73) with the errata's factor:
 // d2T/dx^a dx^b = sum_j V_j (T_i - T_j) [(d + 2) r^a r^b / r^2 - delta^ab] r_ij . grad_i W_ij / r^2.
 // Its trace is (69).
-template <int D>
+template <int D, class K = CubicSpline<D>>
 std::vector<Eigen::Matrix<double, D, D>> hessian(const Particles<D>& p, const std::vector<double>& T,
                                                  const Neighbourhood<D>& nb) {
   using M = Eigen::Matrix<double, D, D>;
   std::vector<M> H(p.size(), M::Zero());
-  for_each_pair<D>(p.x, p.h, nb.list, nb.box, [&](std::size_t i, int j, const Vec<D>& rij, double r, double h) {
+  for_each_pair<D, K>(p.x, p.h, nb.list, nb.box, [&](std::size_t i, int j, const Vec<D>& rij, double r, double h) {
     const double r2 = r * r;
-    const double s = p.m[j] / p.rho[j] * (T[i] - T[j]) * rij.dot(CubicSpline<D>::gradW(rij, r, h)) / r2;
+    const double s = p.m[j] / p.rho[j] * (T[i] - T[j]) * rij.dot(K::gradW(rij, r, h)) / r2;
     H[i] += s * ((D + 2.0) * rij * rij.transpose() / r2 - M::Identity());
   });
   return H;

@@ -11,7 +11,9 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "sph/core/lattice.hpp"
@@ -23,6 +25,7 @@
 #include "sph/hydro/euler.hpp"
 #include "sph/hydro/evolve.hpp"
 #include "sph/hydro/forms.hpp"
+#include "sph/kernel/kernels.hpp"
 #include "verification/cases/hydro_step_params.hpp"
 #include "verification/cases/sod_tube.hpp"
 #include "verification/params.hpp"
@@ -74,6 +77,10 @@ using Gas = sph::EquationOfState<D, sph::IdealGas>;
 template <int D, class Energy, class... Extra>
 using GasScene = sph::Scene<D, sph::SummationDensity<D>, Gas<D>, sph::EulerSymmetric<D, sph::Lambda1>, Energy,
                             sph::ArtificialViscosity<D>, Extra...>;
+// The default method's scene (energy (38)) with the kernel K.
+template <int D, class K>
+using KernelGasScene = sph::Scene<D, sph::SummationDensity<D, K>, Gas<D>, sph::EulerSymmetric<D, sph::Lambda1>,
+                                  sph::EnergyAsymmetric<D, sph::EnergyForm::difference38>, sph::ArtificialViscosity<D>>;
 
 // Evolves p to m.controls.t_end. The initial h comes from (50) iterated with the density (also
 // in "fixed" mode, where h then stays). Never throws on a blow-up: the outcome has the verdict.
@@ -120,6 +127,49 @@ extern template sph::HydroOutcome evolve_gas<2>(sph::Particles<2>&, const sph::B
                                                 sph::HydroHooks<2>);
 extern template sph::HydroOutcome evolve_gas<3>(sph::Particles<3>&, const sph::Box<3>&, const Method&,
                                                 sph::HydroHooks<3>);
+
+// Evolves p as evolve_gas does with the default method (hmode iterate50, energy (38)) and no hooks,
+// with the kernel K in the density (27), the (50) iteration and the pair loop. Throws
+// std::invalid_argument for another method: one scene a kernel (each scene costs compile time).
+template <int D, class K>
+sph::HydroOutcome evolve_gas_with_kernel(sph::Particles<D>& p, const sph::Box<D>& box, const Method& m) {
+  if (m.hmode != "iterate50" || m.energy != "38")
+    throw std::invalid_argument(std::string("kernel ") + K::name + " runs with hmode=iterate50, energy=38 only");
+  const sph::SmoothingLengthControl hc{m.hfact, m.h_max};
+  try {
+    sph::smoothing_length_iterate<D, K>(p, box, hc);
+  } catch (const std::invalid_argument& e) {
+    return {0, 0.0, std::string("unstable: initial smoothing length: ") + e.what()};
+  }
+  const Gas<D> eos{{m.gamma}};
+  const sph::ArtificialViscosity<D> visc{m.alpha, m.beta, 0.01, 0.5};
+  sph::HydroHooks<D> hooks;
+  hooks.index_free = true;
+  auto lists = std::make_shared<sph::VerletList<D>>(hc.skin);
+  hooks.constrain = [hc, &box, lists](sph::Particles<D>& q, double) {
+    sph::smoothing_length_iterate<D, K>(q, box, hc, *lists);
+  };
+  KernelGasScene<D, K> s{{{}, eos, {}, {}, visc}};
+  return sph::evolve(s, p, box, m.controls, hooks);
+}
+
+// evolve_gas_with_kernel for the kernel named (not the cubic spline: evolve_gas), compiled in units
+// of their own (extreme_gas_kernels_2d.cpp, _3d.cpp) beside the cubic's 12 scenes a dimension.
+template <int D>
+sph::HydroOutcome evolve_gas_other_kernel(const std::string& kernel, sph::Particles<D>& p, const sph::Box<D>& box,
+                                          const Method& m) {
+  sph::HydroOutcome out;
+  sph::with_kernel<D>(kernel, [&](auto k) {
+    using K = decltype(k);
+    if constexpr (!std::is_same_v<K, sph::CubicSpline<D>>) out = evolve_gas_with_kernel<D, K>(p, box, m);
+    else throw std::logic_error("the cubic spline's gas is evolve_gas");
+  });
+  return out;
+}
+extern template sph::HydroOutcome evolve_gas_other_kernel<2>(const std::string&, sph::Particles<2>&, const sph::Box<2>&,
+                                                            const Method&);
+extern template sph::HydroOutcome evolve_gas_other_kernel<3>(const std::string&, sph::Particles<3>&, const sph::Box<3>&,
+                                                            const Method&);
 
 // Mean of value over particles in radial bins [k dr, (k+1) dr), k < bins, around the origin.
 struct Profile {

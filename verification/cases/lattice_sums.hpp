@@ -1,5 +1,5 @@
 #pragma once
-// The kernel's sums over a cubic lattice of unit spacing at support radius h (= h/dx): S0, the
+// The kernel K's sums over a cubic lattice of unit spacing at support radius h (= h/dx): S0, the
 // density sum (27) of a uniform lattice over its exact density, and S1, the pressure force's
 // momentum flux through the lattice over its continuum value (the first moment
 // -(1/D) sum_j |x_j| W'(|x_j|)). Both are 1 in the continuum; on a lattice at fixed h/dx they
@@ -14,7 +14,7 @@ struct LatticeSums {
   double S0 = 0.0, S1 = 0.0;
 };
 
-template <int D>
+template <int D, class K = sph::CubicSpline<D>>
 LatticeSums lattice_sums(double h) {
   LatticeSums s;
   const int k = static_cast<int>(std::ceil(h));
@@ -25,8 +25,8 @@ LatticeSums lattice_sums(double h) {
     double r2 = 0.0;
     for (int d = 0; d < D; ++d) j[d] = rest % (2 * k + 1) - k, rest /= 2 * k + 1, r2 += double(j[d]) * j[d];
     const double r = std::sqrt(r2);
-    s.S0 += sph::CubicSpline<D>::W(r, h);
-    s.S1 -= r * sph::CubicSpline<D>::dWdr(r, h) / D;
+    s.S0 += K::W(r, h);
+    s.S1 -= r * K::dWdr(r, h) / D;
   }
   return s;
 }

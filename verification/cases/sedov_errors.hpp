@@ -73,8 +73,8 @@ inline Front front(const std::vector<double>& rad, const std::vector<double>& rh
 // (positions relative to the blast centre); n: particles per side of the unit box (bins 0.25 / n);
 // h: the particles' smoothing lengths (empty: the snapshot has none), whose kernel support is
 // support_per_h h (1 in sphv, whose h is the support, and for SWIFT files, whose reader
-// converts; 2 for SPH-EXA).
-template <int D>
+// converts; 2 for SPH-EXA). K: the kernel the reference density is smoothed with, the run's.
+template <int D, class K = sph::CubicSpline<D>>
 void measure(Result& r, const std::vector<sph::Vec<D>>& x, const std::vector<sph::Vec<D>>& v, const std::vector<double>& m,
              const std::vector<double>& rho, const std::vector<double>& h, double support_per_h, int n, double E,
              double rho0, double t, const reference::Sedov& exact) {
@@ -105,7 +105,7 @@ void measure(Result& r, const std::vector<sph::Vec<D>>& x, const std::vector<sph
     std::vector<double> rho_h(x.size(), rho0);
     for (std::size_t i = 0; i < x.size(); ++i)
       if (rad[i] < 0.5 && rad[i] - support_per_h * h[i] < R)
-        rho_h[i] = smoothed_density<D>(exact, rad[i], support_per_h * h[i], E, rho0, t);
+        rho_h[i] = smoothed_density<D, K>(exact, rad[i], support_per_h * h[i], E, rho0, t);
     const Front fh = front(rad, rho_h, rho0, n);
     r.errors["shock_radius"] = std::abs(f.r_front - fh.r_front) / R;
     r.extra["R_front_smoothed_exact"] = fh.r_front;

@@ -6,6 +6,7 @@
 #include <map>
 
 #include "sph/hydro/forms.hpp"
+#include "sph/kernel/kernels.hpp"
 #include "verification/case.hpp"
 #include "verification/cases/hydro_step_params.hpp"
 #include "verification/cases/lattice_sums.hpp"
@@ -101,6 +102,7 @@ TubeMethod method(const Params& p) {
   m.controls.step.C_force = p.real("C_force");
   m.controls.step.C_energy = p.real("C_energy");
   m.hfact = p.real("hfact");
+  m.kernel = p.text("kernel");
   m.controls.max_steps = p.integer("max_steps");
   return m;
 }
@@ -156,7 +158,8 @@ Result run(const Params& p) {
              {"energy_rate", run.energy_rate},
              {"mass_drift", run.mass_drift},
              {"conservation_note", "active particles only; the boundary layers exert the end pressures"}};
-  const LatticeSums sums = lattice_sums<D>(p.real("hfact"));
+  LatticeSums sums;
+  sph::with_kernel<D>(p.text("kernel"), [&](auto k) { sums = lattice_sums<D, decltype(k)>(p.real("hfact")); });
   r.extra["lattice_S0_minus_1"] = sums.S0 - 1.0;
   r.extra["lattice_S1_minus_1"] = sums.S1 - 1.0;
   const char* axes[] = {"x", "y", "z"};
@@ -203,6 +206,10 @@ std::vector<ParamSpec> params(long n_default, double hfact_default) {
        choice_param("visc_h", "half", "h in mu_ij (46): half the support radius (Monaghan) or the full one",
                     {"half", "full"}),
        real_param("hfact", hfact_default, "initial support radius / particle spacing (50)", 0.0),
+       choice_param("kernel", "cubic_spline",
+                    "the kernel (sph/kernel/kernels.hpp); other than cubic_spline: 1D, with density=summation, "
+                    "euler=23, energy=auto",
+                    sph::kernel_names()),
        integer_param("max_steps", 200000, "step budget (ends with a verdict)")});
   return ps;
 }
@@ -351,6 +358,10 @@ Case make_case(int dim) {
   c.validate = [dim](const Params& p) {
     problem(p);
     const std::string euler = p.text("euler"), energy = p.text("energy");
+    if (p.text("kernel") != "cubic_spline" &&
+        (dim > 1 || p.text("density") != "summation" || euler != "23" || energy != "auto"))
+      throw InputError("kernel=" + p.text("kernel") + ": only the 1D tube (sod) runs kernels other than cubic_spline, "
+                       "with density=summation, euler=23, energy=auto");
     if (dim > 1 && energy != "auto" && energy != sph::partner_energy(euler))
       throw InputError("energy=" + energy + " with euler=" + euler + ": mixed pairings are 1D only (sod); in " +
                        std::to_string(dim) + "D the energy form is the Euler form's partner (energy=auto)");

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
+#include <type_traits>
 
 #include "sph/density/terms.hpp"
 #include "sph/density/variable_h.hpp"
@@ -126,36 +128,49 @@ void with_density(const TubeMethod& m, F&& f) {
 
 }  // namespace tube
 
-template <int D>
-TubeRun simulate_tube(const TubeProblem& pr, const TubeMethod& m, long n) {
+// The tube with kernel K: the cubic spline (6) with every runtime choice of forms; another
+// kernel with the default forms only (summation (27), Euler (23) with energy (41)), one scene each
+// (each scene costs compile time, and the forms are compared with the cubic spline).
+template <int D, class K>
+TubeRun simulate_tube_with(const TubeProblem& pr, const TubeMethod& m, long n) {
   TubeRun run;
   sph::HydroControls controls = m.controls;
   controls.t_end = pr.t_end;
   tube::Layout<D> L = tube::layout<D>(pr, m.hfact, n, run);
-  // The continuity equation starts from the summation density (27) of the initial particles,
-  // not from the sharp jump: a sharp jump puts the first low-density particle in a runaway.
-  if (m.density != "summation")
-    sph::density_summation(L.p, sph::grid_search<D>(L.p.x, L.p.h, L.box), L.box);
   const sph::ArtificialViscosity<D> visc{m.alpha, m.beta, m.eps, m.h_scale};
   const sph::EquationOfState<D, sph::IdealGas> eos{{pr.gamma}};
   // The runtime choice of forms is resolved here, once, into a scene type; "auto" pairs the
   // Euler form with its energy form. Every pairing in 1D (72 scenes); in 2D and 3D the chapter's
   // pairings only (12 scenes each: the mixed ones are studied in 1D, and each scene costs compile time).
   const std::string energy_form = m.energy == "auto" ? sph::partner_energy(m.euler) : m.energy;
-  if (D > 1 && energy_form != sph::partner_energy(m.euler))
-    throw std::invalid_argument("energy form " + energy_form + " with Euler form " + m.euler +
-                                ": mixed pairings are 1D only (energy=auto in 2D and 3D)");
-  tube::with_density<D>(m, [&](auto density) {
-    auto simulate = [&](auto euler, auto energy) {
-      using S = sph::Scene<D, decltype(density), sph::EquationOfState<D, sph::IdealGas>, decltype(euler),
-                           decltype(energy), sph::ArtificialViscosity<D>, sph::SmoothingLengthRate<D>>;
-      tube::advance(S{{density, eos, euler, energy, visc, {}}}, L, controls, run);
-    };
-    if constexpr (D == 1)
-      sph::with_hydro_forms<D>(m.euler, energy_form, m.lambda, simulate);
-    else
-      sph::with_euler_form<D>(m.euler, m.lambda, [&](auto euler) { simulate(euler, sph::partner_energy_term(euler)); });
-  });
+  if constexpr (!std::is_same_v<K, sph::CubicSpline<D>>) {
+    if (m.density != "summation" || m.euler != "23" || energy_form != "41")
+      throw std::invalid_argument(std::string("kernel ") + K::name +
+                                  ": the tube runs it with density=summation, euler=23, energy=auto only");
+    using S = sph::Scene<D, sph::SummationDensity<D, K>, sph::EquationOfState<D, sph::IdealGas>,
+                         sph::EulerSymmetric<D, sph::Lambda1>, sph::EnergySymmetric<D, sph::Lambda1>,
+                         sph::ArtificialViscosity<D>, sph::SmoothingLengthRate<D>>;
+    tube::advance(S{{{}, eos, {}, {}, visc, {}}}, L, controls, run);
+  } else {
+    // The continuity equation starts from the summation density (27) of the initial particles,
+    // not from the sharp jump: a sharp jump puts the first low-density particle in a runaway.
+    if (m.density != "summation")
+      sph::density_summation(L.p, sph::grid_search<D>(L.p.x, L.p.h, L.box), L.box);
+    if (D > 1 && energy_form != sph::partner_energy(m.euler))
+      throw std::invalid_argument("energy form " + energy_form + " with Euler form " + m.euler +
+                                  ": mixed pairings are 1D only (energy=auto in 2D and 3D)");
+    tube::with_density<D>(m, [&](auto density) {
+      auto simulate = [&](auto euler, auto energy) {
+        using S = sph::Scene<D, decltype(density), sph::EquationOfState<D, sph::IdealGas>, decltype(euler),
+                             decltype(energy), sph::ArtificialViscosity<D>, sph::SmoothingLengthRate<D>>;
+        tube::advance(S{{density, eos, euler, energy, visc, {}}}, L, controls, run);
+      };
+      if constexpr (D == 1)
+        sph::with_hydro_forms<D>(m.euler, energy_form, m.lambda, simulate);
+      else
+        sph::with_euler_form<D>(m.euler, m.lambda, [&](auto euler) { simulate(euler, sph::partner_energy_term(euler)); });
+    });
+  }
   const sph::Particles<D>& p = L.p;
   run.active = L.active;
   for (std::size_t i = 0; i < p.size(); ++i) {
@@ -172,6 +187,13 @@ TubeRun simulate_tube(const TubeProblem& pr, const TubeMethod& m, long n) {
     for (std::size_t i = 0; i < p.size(); ++i) run.position.back().push_back(p.x[i][d]);
   }
   return run;
+}
+
+template <int D>
+TubeRun simulate_tube(const TubeProblem& pr, const TubeMethod& m, long n) {
+  if (m.kernel == sph::CubicSpline<D>::name) return simulate_tube_with<D, sph::CubicSpline<D>>(pr, m, n);
+  if constexpr (D == 1) return simulate_tube_other_kernel(pr, m, n);
+  else throw std::invalid_argument("kernel " + m.kernel + ": the " + std::to_string(D) + "D tube runs cubic_spline only");
 }
 
 }  // namespace sphv

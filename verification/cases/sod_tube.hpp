@@ -28,6 +28,7 @@ struct TubeMethod {
   std::string energy = "auto";        // auto (the Euler form's partner) | 37 | 38 | 40 | 41 | 42
   double lambda = 1.5;                // for (25)
   double hfact = 2.4;                 // initial support radius / particle spacing, (50)
+  std::string kernel = "cubic_spline";  // sph/kernel/kernels.hpp; others: 1D, the default forms only
   double alpha = 1.0, beta = 2.0, eps = 0.01, h_scale = 0.5;  // artificial viscosity (45), (46)
   sph::HydroControls controls;
 };
@@ -49,6 +50,10 @@ struct TubeRun {
 
 template <int D>
 TubeRun simulate_tube(const TubeProblem& pr, const TubeMethod& m, long n);
+
+// The 1D tube with a kernel other than the cubic spline (sod_tube_kernels_1d.cpp: their scenes
+// compile in a unit of their own).
+TubeRun simulate_tube_other_kernel(const TubeProblem& pr, const TubeMethod& m, long n);
 
 extern template TubeRun simulate_tube<1>(const TubeProblem&, const TubeMethod&, long);
 extern template TubeRun simulate_tube<2>(const TubeProblem&, const TubeMethod&, long);
