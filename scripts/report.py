@@ -212,7 +212,7 @@ def index_page(name, sweeps, missing, tier, mutants_link):
             failing_rows(sweeps, missing), cases_table(sweeps, missing),
             f"<p>{len(sweeps)} cases, {n_sweeps} case variants, summed run time {wall:.1f} s. Each count is of errors of a case "
             "variant at its finest level. <b class='verified'>verified</b>: the observed order lies in the expected band (widened "
-            "by two standard errors of the fit) and the error is under its bound; <b class='known'>known failure</b>: the error "
+            "by two standard errors of the fit), the fit's standard error is at most the band, and the error is under its bound; <b class='known'>known failure</b>: the error "
             "misses its claimed order for a reason the case states, and the case names the variant or setting that does "
             "converge; <b class='noclaim'>no order claimed</b>: the case says why, and its other checks pass; "
             "<b class='fail'>fail</b>: a check on that error failed. Click a case for its claim, figures and every check.</p>",
