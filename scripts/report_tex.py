@@ -285,11 +285,11 @@ def supplement(sweeps, made, figs):
         for s in ss:
             for c in s["checks"]:
                 if c.get("kind") != "drift":
-                    checks.append(f"{tex(s['variant'])} & {tex(c['name'])} & {fmt(c.get('value'), '.4g', '--')} & "
+                    checks.append(f"{ragged(tex(s['variant']))} & {tex(c['name'])} & {fmt(c.get('value'), '.4g', '--')} & "
                                   f"[{fmt(c.get('lo'), '.4g', '--')}, {fmt(c.get('hi'), '.4g', '--')}] & "
-                                  f"{'pass' if c['pass'] else FAIL} \\\\")
+                                  f"{'pass' if c['pass'] else FAIL} \\tabularnewline")
         if checks:
-            t += long_table("variant & verification check & value & allowed & ", "l l l l l", checks, f"{tex(case)}: verification checks.",
+            t += long_table("variant & verification check & value & allowed & ", r"p{3.2cm} l l l l", checks, f"{tex(case)}: verification checks.",
                             f"tab:supp-checks-{slug(case)}")
         drift = [(s, c) for s in ss for c in s["checks"] if c.get("kind") == "drift"]
         bad = [f"{s['variant']}: {c['name']}" for s, c in drift if not c["pass"]]
