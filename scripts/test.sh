@@ -9,7 +9,7 @@ export SPHV_WERROR=${SPHV_WERROR:-ON}
 # The sanitizer tests (ASan + UBSan on the input and file code, verification/sanitizer_tests.cmake)
 # are built and run with the others.
 export SPHV_SANITIZER_TESTS=${SPHV_SANITIZER_TESTS:-ON}
-# Their own folder at -O2: the whole command must stay under 10 minutes on a fresh 2-core machine.
+# Their own folder at -O2: the whole command must stay under 8 minutes on a fresh 2-core machine.
 # The main job's build/ compiles the scenes the same way but sph/ and reference/ at -O3
 # (CMakeLists.txt: optimisation by part). -fvect-cost-model=cheap keeps -O3's packing of the
 # 3-vector arithmetic in the pair loops, which plain -O2 leaves scalar (results bit-identical: no
