@@ -4,6 +4,8 @@
 #include <numbers>
 
 #include "sph/core/vec.hpp"
+#include "sph/kernel/power.hpp"
+#include "sph/kernel/radial_gradient.hpp"
 
 namespace sph {
 
@@ -12,7 +14,7 @@ namespace sph {
 // The interface every kernel of sph/kernel/kernels.hpp has: name, knots (the q = r/h where a
 // piece ends, 1 last: quadrature and the kernel case split there), sigma, W, dWdr, gradW.
 template <int D>
-struct CubicSpline {
+struct CubicSpline : RadialGradient<CubicSpline<D>, D> {
   static_assert(D >= 1 && D <= 3);
   static constexpr const char* name = "cubic_spline";
   static constexpr std::array<double, 2> knots{0.5, 1.0};
@@ -21,30 +23,19 @@ struct CubicSpline {
                                   : D == 2 ? 40.0 / (7.0 * std::numbers::pi)
                                            : 8.0 / std::numbers::pi;
 
-  static constexpr double hpow(double h) {
-    double p = h;
-    for (int k = 1; k < D; ++k) p *= h;
-    return p;
-  }
-
   // (6), written as truncated powers, s (2 (1-q)_+^3 - 8 (1/2-q)_+^3) with (x)_+ = max(x, 0):
   // the same polynomial on each piece, without branches the pair loops would mispredict.
   static double W(double r, double h) {
     const double hinv = 1.0 / h, q = r * hinv;
     const double a = std::max(1.0 - q, 0.0), b = std::max(0.5 - q, 0.0);
-    return sigma * hpow(hinv) * (2.0 * a * a * a - 8.0 * b * b * b);
+    return sigma * kernel_power<D>(hinv) * (2.0 * a * a * a - 8.0 * b * b * b);
   }
 
   // (8): dW/dr = (6 sigma / h^(D+1)) (-(1-q)_+^2 + 4 (1/2-q)_+^2).
   static double dWdr(double r, double h) {
     const double hinv = 1.0 / h, q = r * hinv;
     const double a = std::max(1.0 - q, 0.0), b = std::max(0.5 - q, 0.0);
-    return 6.0 * sigma * hpow(hinv) * hinv * (4.0 * b * b - a * a);
-  }
-
-  // (9): grad_i W_ij = r_ij / |r_ij| dW/dr, with r_ij = r_i - r_j; zero at r = 0.
-  static Vec<D> gradW(const Vec<D>& rij, double r, double h) {
-    return r > 0.0 ? Vec<D>(rij * (dWdr(r, h) / r)) : Vec<D>::Zero();
+    return 6.0 * sigma * kernel_power<D>(hinv) * hinv * (4.0 * b * b - a * a);
   }
 };
 

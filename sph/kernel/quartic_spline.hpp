@@ -4,6 +4,7 @@
 #include <numbers>
 
 #include "sph/core/vec.hpp"
+#include "sph/kernel/radial_gradient.hpp"
 #include "sph/kernel/power.hpp"
 
 namespace sph {
@@ -13,7 +14,7 @@ namespace sph {
 //   W = sigma / h^D [(1-q)_+^4 - 5 (3/5-q)_+^4 + 10 (1/5-q)_+^4].
 // C^2; its pieces end at q = 1/5, 3/5, 1.
 template <int D>
-struct QuarticSpline {
+struct QuarticSpline : RadialGradient<QuarticSpline<D>, D> {
   static_assert(D >= 1 && D <= 3);
   static constexpr const char* name = "quartic_spline";
   static constexpr std::array<double, 3> knots{0.2, 0.6, 1.0};
@@ -35,11 +36,6 @@ struct QuarticSpline {
     const double hinv = 1.0 / h, q = r * hinv;
     const double a = std::max(1.0 - q, 0.0), b = std::max(0.6 - q, 0.0), c = std::max(0.2 - q, 0.0);
     return -4.0 * sigma * kernel_power<D>(hinv) * hinv * (a * a * a - 5.0 * b * b * b + 10.0 * c * c * c);
-  }
-
-  // (9): grad_i W_ij = r_ij / |r_ij| dW/dr; zero at r = 0.
-  static Vec<D> gradW(const Vec<D>& rij, double r, double h) {
-    return r > 0.0 ? Vec<D>(rij * (dWdr(r, h) / r)) : Vec<D>::Zero();
   }
 };
 

@@ -4,6 +4,7 @@
 #include <numbers>
 
 #include "sph/core/vec.hpp"
+#include "sph/kernel/radial_gradient.hpp"
 #include "sph/kernel/power.hpp"
 
 namespace sph {
@@ -13,7 +14,7 @@ namespace sph {
 //   W = sigma / h^D [(1-q)_+^5 - 6 (2/3-q)_+^5 + 15 (1/3-q)_+^5].
 // C^4; its pieces end at q = 1/3, 2/3, 1.
 template <int D>
-struct QuinticSpline {
+struct QuinticSpline : RadialGradient<QuinticSpline<D>, D> {
   static_assert(D >= 1 && D <= 3);
   static constexpr const char* name = "quintic_spline";
   static constexpr std::array<double, 3> knots{1.0 / 3.0, 2.0 / 3.0, 1.0};
@@ -36,11 +37,6 @@ struct QuinticSpline {
     const double a = std::max(1.0 - q, 0.0), b = std::max(2.0 / 3.0 - q, 0.0), c = std::max(1.0 / 3.0 - q, 0.0);
     const double a2 = a * a, b2 = b * b, c2 = c * c;
     return -5.0 * sigma * kernel_power<D>(hinv) * hinv * (a2 * a2 - 6.0 * b2 * b2 + 15.0 * c2 * c2);
-  }
-
-  // (9): grad_i W_ij = r_ij / |r_ij| dW/dr; zero at r = 0.
-  static Vec<D> gradW(const Vec<D>& rij, double r, double h) {
-    return r > 0.0 ? Vec<D>(rij * (dWdr(r, h) / r)) : Vec<D>::Zero();
   }
 };
 

@@ -4,6 +4,7 @@
 #include <numbers>
 
 #include "sph/core/vec.hpp"
+#include "sph/kernel/radial_gradient.hpp"
 #include "sph/kernel/power.hpp"
 
 namespace sph {
@@ -13,7 +14,7 @@ namespace sph {
 //   1D: psi_{1,1} = a^3 (1 + 3q);      2D, 3D: psi_{3,1} = a^4 (1 + 4q).
 // One piece (knot q = 1); a polynomial in r with a q^3 term, so not smooth at r = 0 either.
 template <int D>
-struct WendlandC2 {
+struct WendlandC2 : RadialGradient<WendlandC2<D>, D> {
   static_assert(D >= 1 && D <= 3);
   static constexpr const char* name = "wendland_c2";
   static constexpr std::array<double, 1> knots{1.0};
@@ -33,11 +34,6 @@ struct WendlandC2 {
     const double hinv = 1.0 / h, q = r * hinv, a = std::max(1.0 - q, 0.0);
     if constexpr (D == 1) return -12.0 * sigma * hinv * hinv * q * a * a;
     else return -20.0 * sigma * kernel_power<D>(hinv) * hinv * q * a * a * a;
-  }
-
-  // (9): grad_i W_ij = r_ij / |r_ij| dW/dr; zero at r = 0.
-  static Vec<D> gradW(const Vec<D>& rij, double r, double h) {
-    return r > 0.0 ? Vec<D>(rij * (dWdr(r, h) / r)) : Vec<D>::Zero();
   }
 };
 

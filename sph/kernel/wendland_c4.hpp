@@ -4,6 +4,7 @@
 #include <numbers>
 
 #include "sph/core/vec.hpp"
+#include "sph/kernel/radial_gradient.hpp"
 #include "sph/kernel/power.hpp"
 
 namespace sph {
@@ -13,7 +14,7 @@ namespace sph {
 //   1D: psi_{1,2} = a^5 (1 + 5q + 8q^2);      2D, 3D: psi_{3,2} = a^6 (1 + 6q + 35/3 q^2).
 // One piece (knot q = 1).
 template <int D>
-struct WendlandC4 {
+struct WendlandC4 : RadialGradient<WendlandC4<D>, D> {
   static_assert(D >= 1 && D <= 3);
   static constexpr const char* name = "wendland_c4";
   static constexpr std::array<double, 1> knots{1.0};
@@ -33,11 +34,6 @@ struct WendlandC4 {
     const double hinv = 1.0 / h, q = r * hinv, a = std::max(1.0 - q, 0.0), a2 = a * a;
     if constexpr (D == 1) return -14.0 * sigma * hinv * hinv * q * (1.0 + 4.0 * q) * a2 * a2;
     else return -56.0 / 3.0 * sigma * kernel_power<D>(hinv) * hinv * q * (1.0 + 5.0 * q) * a2 * a2 * a;
-  }
-
-  // (9): grad_i W_ij = r_ij / |r_ij| dW/dr; zero at r = 0.
-  static Vec<D> gradW(const Vec<D>& rij, double r, double h) {
-    return r > 0.0 ? Vec<D>(rij * (dWdr(r, h) / r)) : Vec<D>::Zero();
   }
 };
 

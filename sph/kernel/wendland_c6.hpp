@@ -4,6 +4,7 @@
 #include <numbers>
 
 #include "sph/core/vec.hpp"
+#include "sph/kernel/radial_gradient.hpp"
 #include "sph/kernel/power.hpp"
 
 namespace sph {
@@ -13,7 +14,7 @@ namespace sph {
 //   1D: psi_{1,3} = a^7 (1 + 7q + 19q^2 + 21q^3);      2D, 3D: psi_{3,3} = a^8 (1 + 8q + 25q^2 + 32q^3).
 // One piece (knot q = 1).
 template <int D>
-struct WendlandC6 {
+struct WendlandC6 : RadialGradient<WendlandC6<D>, D> {
   static_assert(D >= 1 && D <= 3);
   static constexpr const char* name = "wendland_c6";
   static constexpr std::array<double, 1> knots{1.0};
@@ -33,11 +34,6 @@ struct WendlandC6 {
     const double hinv = 1.0 / h, q = r * hinv, a = std::max(1.0 - q, 0.0), a2 = a * a, a4 = a2 * a2;
     if constexpr (D == 1) return -6.0 * sigma * hinv * hinv * q * (3.0 + q * (18.0 + 35.0 * q)) * a4 * a2;
     else return -22.0 * sigma * kernel_power<D>(hinv) * hinv * q * (1.0 + q * (7.0 + 16.0 * q)) * a4 * a2 * a;
-  }
-
-  // (9): grad_i W_ij = r_ij / |r_ij| dW/dr; zero at r = 0.
-  static Vec<D> gradW(const Vec<D>& rij, double r, double h) {
-    return r > 0.0 ? Vec<D>(rij * (dWdr(r, h) / r)) : Vec<D>::Zero();
   }
 };
 

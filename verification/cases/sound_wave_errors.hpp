@@ -13,6 +13,7 @@
 #include "reference/sound_wave.hpp"
 #include "sph/core/vec.hpp"
 #include "sph/kernel/cubic_spline.hpp"
+#include "sph/kernel/power.hpp"
 #include "verification/cases/radial_result.hpp"
 #include "verification/result.hpp"
 
@@ -74,7 +75,7 @@ double lattice_phase_speed_ratio(double h_over_dx, double gamma) {
   const int side = 2 * reach + 1;
   int count = 1;
   for (int d = 0; d < D; ++d) count *= side;
-  const double sigma = sph::CubicSpline<D>::sigma / sph::CubicSpline<D>::hpow(h);
+  const double sigma = sph::CubicSpline<D>::sigma / sph::kernel_power<D>(h);
   double S0 = 0.0, S1 = 0.0, S2 = 0.0;
   for (int idx = 0; idx < count; ++idx) {
     int rest = idx;
