@@ -111,7 +111,9 @@ Result run(const Params& p) {
 
 std::vector<Check> gates(const Sweep& s) {
   std::vector<Check> c;
-  const std::string kind = find_case(s.case_name).parse(s.settings).text("kind");
+  const Params prm = find_case(s.case_name).parse(s.settings);
+  const std::string kind = prm.text("kind");
+  const bool smooth = kind == "contrast" && prm.real("contact_width") > 0.0;
   for (std::size_t k = 0; k < s.runs.size(); ++k) {
     const auto& r = s.runs[k];
     const std::string level = "n" + std::to_string(s.levels[k]) + "_" + kind;
@@ -123,7 +125,6 @@ std::vector<Check> gates(const Sweep& s) {
       c.push_back({level + "_at_rest", r.errors.at("speed"), 0.0, 0.0, "no neighbour, no force", Check::Kind::verification,
                    "speed"});
     }
-    const bool smooth = kind == "contrast" && find_case(s.case_name).parse(s.settings).real("contact_width") > 0.0;
     if (kind == "contrast" && !smooth && r.verdict == "stable" && s.levels[k] == 16) {  // the measured level
       // Summation density (27) smooths the mass across the contact, so next to it the light gas
       // gets a density of the order of the dense one's and, with its u, a pressure of the order of
