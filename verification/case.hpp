@@ -7,8 +7,10 @@
 #include <type_traits>
 #include <vector>
 
+#include "verification/initial_state.hpp"
 #include "verification/params.hpp"
 #include "verification/result.hpp"
+#include "verification/scorer.hpp"
 
 namespace sphv {
 
@@ -90,6 +92,10 @@ struct Case {
   std::function<bool(const Params&)> expects_unstable;
   std::function<Result(const Params&)> run;
   std::function<std::vector<Check>(const Sweep&)> gates;  // may be empty
+  // How `sphv score` reads another code's snapshot of the case (empty score: it cannot).
+  Scorer scorer;
+  // `sphv ic`: the case's initial conditions for another code (empty: none).
+  InitialConditions ic;
 
   Params parse(const std::vector<std::string>& settings) const;
   std::vector<long> tier_levels(const std::vector<std::string>& settings, Tier t) const;
@@ -98,8 +104,10 @@ struct Case {
   bool verdict_expected(const Params& p, const std::string& verdict) const;
 };
 
-// Cases register themselves from their own source file: `static Registration r{make_case()};`,
-// with the file's names in a namespace of its own, sphv::<file>_case (the unity build compiles
+// Cases register themselves from their own source file: `static Registration r{make_case()};`.
+// The registration is all a case declares: its runs, sweeps, tiers, gates (every case tagged
+// "gate" is a Catch2 test, verification/tests/gates.cpp), scorer and initial conditions. The
+// file's names go in a namespace of its own, sphv::<file>_case (the unity build compiles
 // several case files as one translation unit, CMakeLists.txt).
 struct Registration {
   explicit Registration(Case c);

@@ -9,24 +9,10 @@
 #include <vector>
 
 #include "verification/case.hpp"
-#include "verification/snapshot/snapshot.hpp"
-#include "verification/snapshot/swift_ic.hpp"
 
 namespace sphv {
 
-// Where the particles lie: as sphv's own run lays them out (csv, h5part), or as SWIFT's examples
-// do (swift): every particle inside a periodic box [0, box), the radial cases' centre at its
-// middle, the shock tube periodic on [0, 2] with its interfaces at x = 1 and at the wrap
-// (examples/HydroTests/SodShock_1D/makeIC.py) and no boundary layers.
-enum class IcLayout { sphv, swift };
-
-struct InitialState {
-  Snapshot s;
-  SwiftIcHeader swift;  // the box (IcLayout::swift) and the gas's gamma
-};
-
-using InitialConditions = std::function<InitialState(const Params&, IcLayout)>;
-// The initial conditions of a case, or an InputError listing the cases that have them.
+// The initial conditions a case declares (Case::ic), or an InputError listing the cases that have them.
 const InitialConditions& find_ic(const std::string& case_name);
 void write_ic(const Case& c, const Params& p, const std::filesystem::path& path, const std::string& format);
 

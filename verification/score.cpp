@@ -8,14 +8,13 @@
 namespace sphv {
 
 const Scorer& find_scorer(const std::string& case_name) {
-  const auto it = scorers().find(case_name);
-  if (it != scorers().end()) return it->second;
+  const Case& c = find_case(case_name);
+  if (c.scorer.score) return c.scorer;
   std::string names;
-  for (const auto& [k, v] : scorers()) names += (names.empty() ? "" : ", ") + k;
+  for (const auto& k : catalogue())
+    if (k.scorer.score) names += (names.empty() ? "" : ", ") + k.name;
   throw InputError("case '" + case_name + "' cannot score snapshots (cases that can: " + names + ")");
 }
-
-bool has_scorer(const std::string& case_name) { return scorers().count(case_name) > 0; }
 
 namespace {
 

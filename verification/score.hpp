@@ -12,24 +12,8 @@
 
 namespace sphv {
 
-// How a case's resolution n follows from a snapshot (unless set): not at all, as particles per
-// unit length N^(1/dim) / L (L: the box's side along x, 1 where the file states no box), or as
-// the particle count N.
-enum class Resolution { none, per_length, count };
-
-// How one case scores a snapshot.
-struct Scorer {
-  std::string time_key;                          // the case's time parameter ("" = none)
-  std::function<Result(const Params&, const Snapshot&)> score;
-  std::function<double(const Params&)> t_end;     // the time a run of these parameters ends at (may be empty)
-  Resolution n = Resolution::none;
-  std::function<double(const Params&)> gamma;     // the adiabatic index in use (empty: the case has none)
-};
-
-// The scorer of a case, or an InputError listing the cases that have one.
+// The scorer a case declares (Case::scorer), or an InputError listing the cases that have one.
 const Scorer& find_scorer(const std::string& case_name);
-bool has_scorer(const std::string& case_name);
-const std::map<std::string, Scorer>& scorers();  // defined in score_cases.cpp
 
 // Scores a snapshot. What the file states is used unless set: the time (the case's time
 // parameter), the dimension, gamma, the box (the radial cases' centre: its middle; the tubes'

@@ -14,6 +14,7 @@
 #include "verification/case.hpp"
 #include "verification/cases/centre_param.hpp"
 #include "verification/cases/evrard_errors.hpp"
+#include "verification/cases/evrard_snapshots.hpp"
 #include "verification/cases/evrard_setup.hpp"
 #include "verification/cases/extreme_hydro.hpp"
 #include "verification/sweep.hpp"
@@ -255,6 +256,8 @@ const Registration reg{Case{
     .validate = validate,
     .run = run,
     .gates = gates,
+    .scorer = evrard::scorer(),
+    .ic = evrard::initial_conditions,
 }};
 
 }  // namespace

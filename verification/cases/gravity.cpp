@@ -10,6 +10,7 @@
 #include "verification/case.hpp"
 #include "verification/cases/gravity_compare.hpp"
 #include "verification/cases/gravity_models.hpp"
+#include "verification/cases/gravity_snapshots.hpp"
 #include "verification/sweep.hpp"
 
 namespace sphv::gravity_case {
@@ -284,6 +285,7 @@ const Registration reg{Case{
     },
     .run = run,
     .gates = gates,
+    .scorer = gravity::scorer(),
 }};
 
 }  // namespace

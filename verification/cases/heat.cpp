@@ -11,6 +11,7 @@
 #include "reference/heat_analytic.hpp"
 #include "verification/case.hpp"
 #include "verification/cases/heat_errors.hpp"
+#include "verification/cases/heat_snapshots.hpp"
 #include "verification/cases/heat_run.hpp"
 #include "verification/sweep.hpp"
 
@@ -196,6 +197,8 @@ const Registration reg{Case{
     .validate = validate,
     .run = run,
     .gates = gates,
+    .scorer = heat::scorer(),
+    .ic = heat::initial_conditions,
 }};
 
 }  // namespace

@@ -21,6 +21,7 @@
 #include "verification/cases/lattice_sums.hpp"
 #include "verification/cases/centre_param.hpp"
 #include "verification/cases/noh_errors.hpp"
+#include "verification/cases/noh_snapshots.hpp"
 #include "verification/cases/noh_setup.hpp"
 #include "verification/cases/radial_result.hpp"
 #include "verification/sweep.hpp"
@@ -177,6 +178,8 @@ const Registration reg{Case{
     .validate = validate,
     .run = run,
     .gates = gates,
+    .scorer = noh::scorer(),
+    .ic = noh::initial_conditions,
 }};
 
 }  // namespace

@@ -23,6 +23,7 @@
 #include "verification/cases/centre_param.hpp"
 #include "verification/cases/radial_result.hpp"
 #include "verification/cases/sedov_errors.hpp"
+#include "verification/cases/sedov_snapshots.hpp"
 #include "verification/cases/sedov_setup.hpp"
 #include "verification/sweep.hpp"
 
@@ -215,6 +216,8 @@ const Registration reg{Case{
     .validate = validate,
     .run = run,
     .gates = gates,
+    .scorer = sedov::scorer(),
+    .ic = sedov::initial_conditions,
 }};
 
 }  // namespace

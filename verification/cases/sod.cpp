@@ -11,6 +11,7 @@
 #include "verification/cases/hydro_step_params.hpp"
 #include "verification/cases/lattice_sums.hpp"
 #include "verification/cases/sod_errors.hpp"
+#include "verification/cases/sod_snapshots.hpp"
 #include "verification/cases/sod_tube.hpp"
 #include "verification/sweep.hpp"
 
@@ -400,6 +401,8 @@ Case make_case(int dim) {
     c.run = run<3>;
   }
   c.gates = [dim](const Sweep& s) { return tube_gates(s, dim); };
+  c.scorer = tube::scorer();
+  c.ic = tube::initial_conditions(dim);
   return c;
 }
 

@@ -41,6 +41,7 @@
 #include "verification/cases/extreme_hydro.hpp"
 #include "verification/cases/radial_result.hpp"
 #include "verification/cases/sound_wave_errors.hpp"
+#include "verification/cases/sound_wave_snapshots.hpp"
 #include "verification/cases/sound_wave_setup.hpp"
 #include "verification/sweep.hpp"
 
@@ -228,6 +229,8 @@ const Registration reg{Case{
     .validate = validate,
     .run = run,
     .gates = gates,
+    .scorer = sound_wave::scorer(),
+    .ic = sound_wave::initial_conditions,
 }};
 
 }  // namespace
