@@ -8,7 +8,7 @@
 #include "verification/params.hpp"
 #include "verification/snapshot/snapshot.hpp"
 
-namespace sphv::columns {
+namespace sphv::snapshot_columns {
 
 // Positions (minus centre) or velocities of the first D axes as vectors.
 template <int D>
@@ -50,4 +50,4 @@ inline void positive(const Snapshot& s, const std::string& name, const std::stri
 inline double real_t_end(const Params& p) { return p.real("t_end"); }
 inline double real_gamma(const Params& p) { return p.real("gamma"); }
 
-}  // namespace sphv::columns
+}  // namespace sphv::snapshot_columns

@@ -13,7 +13,7 @@
 namespace sphv::evrard_snapshots_case {
 namespace {
 
-using namespace columns;
+using namespace snapshot_columns;
 using namespace ic_layout;
 
 Result score_evrard(const Params& prm, const Snapshot& s) {
@@ -51,7 +51,7 @@ Result score_evrard(const Params& prm, const Snapshot& s) {
 
 namespace sphv::evrard {
 
-Scorer scorer() { return {"t_end", evrard_snapshots_case::score_evrard, columns::real_t_end, Resolution::count, columns::real_gamma}; }
+Scorer scorer() { return {"t_end", evrard_snapshots_case::score_evrard, snapshot_columns::real_t_end, Resolution::count, snapshot_columns::real_gamma}; }
 
 // The unit sphere around the origin, h before the run's iteration (evrard_setup.hpp); SWIFT's
 // layout: the box of side 100 with the sphere at its centre (50, 50, 50), as its EvrardCollapse_3D.

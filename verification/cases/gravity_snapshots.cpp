@@ -9,7 +9,7 @@
 namespace sphv::gravity_snapshots_case {
 namespace {
 
-using namespace columns;
+using namespace snapshot_columns;
 
 Result score_gravity(const Params& prm, const Snapshot& s) {
   const std::string who = "gravity (the code's accelerations ax, ay, az)";

@@ -10,7 +10,7 @@
 namespace sphv::heat_snapshots_case {
 namespace {
 
-using namespace columns;
+using namespace snapshot_columns;
 using namespace ic_layout;
 
 Result score_heat(const Params& prm, const Snapshot& s) {
@@ -37,7 +37,7 @@ Result score_heat(const Params& prm, const Snapshot& s) {
 
 namespace sphv::heat {
 
-Scorer scorer() { return {"t_end", heat_snapshots_case::score_heat, columns::real_t_end}; }
+Scorer scorer() { return {"t_end", heat_snapshots_case::score_heat, snapshot_columns::real_t_end}; }
 
 // The lattice in the periodic unit box with the summation density, u = c_v T(x, 0) of the chosen
 // set-up (setup=gauss or sine; heat_errors.hpp); no pressure (conduction only). The unit box is

@@ -13,7 +13,7 @@
 namespace sphv::noh_snapshots_case {
 namespace {
 
-using namespace columns;
+using namespace snapshot_columns;
 using namespace ic_layout;
 
 Result score_noh(const Params& prm, const Snapshot& s) {
@@ -39,7 +39,7 @@ Result score_noh(const Params& prm, const Snapshot& s) {
 
 namespace sphv::noh {
 
-Scorer scorer() { return {"t_end", noh_snapshots_case::score_noh, columns::real_t_end, Resolution::per_length, columns::real_gamma}; }
+Scorer scorer() { return {"t_end", noh_snapshots_case::score_noh, snapshot_columns::real_t_end, Resolution::per_length, snapshot_columns::real_gamma}; }
 
 // The inflowing ball around the origin (noh_setup.hpp); SWIFT's layout: centred in the periodic box
 // of side 2 (as its Noh examples) or, for a ball that needs more, the next even side that leaves

@@ -12,7 +12,7 @@
 namespace sphv::sedov_snapshots_case {
 namespace {
 
-using namespace columns;
+using namespace snapshot_columns;
 using namespace ic_layout;
 
 Result score_sedov(const Params& prm, const Snapshot& s) {
@@ -46,7 +46,7 @@ Result score_sedov(const Params& prm, const Snapshot& s) {
 
 namespace sphv::sedov {
 
-Scorer scorer() { return {"t", sedov_snapshots_case::score_sedov, end_time, Resolution::per_length, columns::real_gamma}; }
+Scorer scorer() { return {"t", sedov_snapshots_case::score_sedov, end_time, Resolution::per_length, snapshot_columns::real_gamma}; }
 
 // The blast in the periodic box [-0.5, 0.5]^d, centre at the origin (sedov_setup.hpp); SWIFT's
 // layout: the box [0, 1]^d, centre (0.5, ...) as in its SedovBlast examples.

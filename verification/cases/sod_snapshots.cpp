@@ -12,7 +12,7 @@
 namespace sphv::sod_snapshots_case {
 namespace {
 
-using namespace columns;
+using namespace snapshot_columns;
 using namespace ic_layout;
 
 // The tube's domain as text: "[0, 2], periodic".

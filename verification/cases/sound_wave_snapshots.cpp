@@ -11,7 +11,7 @@
 namespace sphv::sound_wave_snapshots_case {
 namespace {
 
-using namespace columns;
+using namespace snapshot_columns;
 using namespace ic_layout;
 
 // The wave along x with one wavelength across the box: the file's box along x where it states
@@ -47,7 +47,7 @@ Result score_sound_wave(const Params& prm, const Snapshot& s) {
 
 namespace sphv::sound_wave {
 
-Scorer scorer() { return {"t_end", sound_wave_snapshots_case::score_sound_wave, columns::real_t_end, Resolution::per_length, columns::real_gamma}; }
+Scorer scorer() { return {"t_end", sound_wave_snapshots_case::score_sound_wave, snapshot_columns::real_t_end, Resolution::per_length, snapshot_columns::real_gamma}; }
 
 // The displaced lattice in the periodic unit box [0, 1)^d (sound_wave_setup.hpp), v_x and u of
 // the wave, rho the wave's exact density (a run replaces it by the summation (27)); the unit box
