@@ -26,7 +26,8 @@ def bench_body(results, out):
     b = read_json(results / "bench.json")
     pr = b["provenance"]
     e = html.escape
-    body = [f"<h1>sphv benchmarks</h1><p>{e(b['benchmark'])}; {e(str(pr.get('cpu')))}, {pr.get('cores')} cores, build "
+    scheme = f"; hydro stages: scheme {e(b['scheme'])} (sph/schemes/)" if "scheme" in b else ""
+    body = [f"<h1>sphv benchmarks</h1><p>{e(b['benchmark'])}{scheme}; {e(str(pr.get('cpu')))}, {pr.get('cores')} cores, build "
             f"{e(str(pr.get('build_type')))} ({e(str(pr.get('cxx_flags')))}), {e(str(pr.get('compiler')))}, commit "
             f"{e(str(pr.get('git_commit')))}{dirty_note(pr)}, instruction-set path {e(str(pr.get('isa_path', 'portable')))} (pair loops and tree "
             f"walk). Benchmarks, not tests: nothing fails on a time.</p><div class='figs'>"]

@@ -1,9 +1,9 @@
 #pragma once
-// The hydro part of `sphv bench`: the force loop of the Sod scene's matched pair (26)/(42)
-// with artificial viscosity, and a full kick-drift-kick step: `evolve`'s own (Courant step,
-// neighbour lists reused while they cover, sph/hydro/evolve.hpp), and with a fresh search every
-// step; and evolve's step from the particles stored in a random order, with and without its
-// reordering of them (sph/hydro/storage_order.hpp).
+// The hydro part of `sphv bench`, for the scheme named (sph/schemes/; the chapter's by default, the
+// one the blast cases verify), with its default forms: its force loop, and a full kick-drift-kick
+// step: `evolve`'s own (the scheme's phases and time step, neighbour lists reused while they cover,
+// sph/hydro/evolve.hpp), and with a fresh search every step; and evolve's step from the particles
+// stored in a random order, with and without its reordering of them (sph/hydro/storage_order.hpp).
 #include <algorithm>
 #include <chrono>
 #include <functional>
@@ -15,25 +15,23 @@
 #include <vector>
 
 #include "sph/core/verdict.hpp"
-#include "sph/density/terms.hpp"
-#include "sph/hydro/energy.hpp"
-#include "sph/hydro/eos.hpp"
-#include "sph/hydro/euler.hpp"
+#include "sph/density/summation.hpp"
 #include "sph/hydro/evolve.hpp"
-#include "sph/hydro/viscosity.hpp"
+#include "sph/schemes/schemes.hpp"
 #include "sph/search/grid_search.hpp"
 #include "sph/time/leapfrog.hpp"
 
 namespace sphv {
 
-// Floating-point operations of one force pair of the bench's scene, counted from the source (a
-// division or square root counts as one, min/max and compares as none): the pair geometry (r_ij,
-// nearest image, |r_ij|, h_ij; sph/hydro/pairs.hpp, sph/core/box.hpp) 26, grad W
-// (sph/kernel/cubic_spline.hpp) 17, Euler (26) 12, energy (42) 12, viscosity (44)-(48) 32. That is
-// 99 once the repeated subexpressions are computed once (the energy's P_ij is the Euler's; v_ij,
-// v_ij . grad W and m_j / 2 are shared by the energy and the viscosity); 113 as written. The lower
-// count keeps the share of peak from overstating.
-constexpr double force_pair_flops = 99.0;
+// Floating-point operations of one force pair of the chapter's scheme (sph/schemes/chapter.hpp),
+// counted from the source (a division or square root counts as one, min/max and compares as none):
+// the pair geometry (r_ij, nearest image, |r_ij|, h_ij; sph/hydro/pairs.hpp, sph/core/box.hpp) 26,
+// grad W (sph/kernel/cubic_spline.hpp) 17, Euler (23) 10, energy (38) 12, viscosity (44)-(48) 33.
+// That is 98 once the repeated subexpressions are computed once (rho_i rho_j is the Euler's and the
+// energy's; v_ij and v_ij . grad W are shared by the energy and the viscosity); 107 as written. The
+// lower count keeps the share of peak from overstating. Another scheme's share is not shown.
+constexpr double force_pair_flops = 98.0;
+constexpr const char* force_pair_flops_scheme = "chapter";
 
 // The steps over which the full step is timed (time_hydro_step).
 constexpr long full_step_window = 32;
@@ -59,14 +57,18 @@ struct HydroTimes {
   double pairs, bytes_per_particle, searches_per_step;
 };
 
-// The scene of the full step: summation density (27), the forces' terms.
-using StepScene = sph::Scene<3, sph::SummationDensity<3>, sph::EquationOfState<3, sph::IdealGas>,
-                             sph::EulerSymmetric<3, sph::Lambda2>, sph::EnergySymmetric<3, sph::Lambda2>,
-                             sph::ArtificialViscosity<3>>;
+// f(scheme) for the bench's gas (gamma 1.4; the lattice's h = 2.4 dx is (50)'s hfact): the scheme
+// named, with the cubic spline and its default forms.
+template <class F>
+void with_bench_scheme(const std::string& scheme, F&& f) {
+  sph::SchemeOptions o;
+  o.gamma = 1.4;
+  sph::with_default_scheme<3, sph::CubicSpline<3>>(scheme, o, std::forward<F>(f));
+}
 
-// A step as evolve takes it (sph/hydro/evolve.hpp: Courant step, lists reused while they cover, the
-// particles stored in the search's cell order, the verdict's check), from the state p with its
-// density: evolve itself, run for 1 + full_step_window steps, each step after the first timed by
+// A step as evolve takes it (sph/schemes/scheme.hpp: the scheme's phases and time step, lists reused
+// while they cover, the particles stored in the search's cell order, the verdict's check), from the
+// state p: evolve itself, run for 1 + full_step_window steps, each step after the first timed by
 // its `stepped` hook (which only reads the clock, so evolve still reorders). The first step, with
 // the start (first evaluation, search and reordering), is left out. The window spans several reuses
 // of a list: with 8 steps it held 3 searches at the skin of 0.1 (0.38 a step, against 0.28 over 40
@@ -81,18 +83,19 @@ using StepScene = sph::Scene<3, sph::SummationDensity<3>, sph::EquationOfState<3
 // The runs are timed after an untimed one that pays the process's first touch of the buffers (a
 // cold first run took 1.03 s against 0.52 s warm at N = 125,000 on one thread). Returns the step's
 // time and the searches a step.
-inline std::pair<Times, double> time_evolve_step(const sph::Particles<3>& p, const sph::Box<3>& box, const Timer& timer,
+inline std::pair<Times, double> time_evolve_step(const std::string& scheme, const sph::Particles<3>& p,
+                                                 const sph::Box<3>& box, const Timer& timer,
                                                  long reorder_every = sph::HydroControls{}.reorder_every) {
   using namespace sph;
   using Clock = std::chrono::steady_clock;
-  StepScene step;
   HydroControls run;
   run.t_end = 1e30;  // ended by the step budget
   run.reorder_every = reorder_every;
   auto evolve_for = [&](long steps, const HydroHooks<3>& hooks) {  // returns the searches made
     run.max_steps = steps;
     Particles<3> q = p;
-    const HydroOutcome out = evolve(step, q, box, run, hooks);
+    HydroOutcome out;
+    with_bench_scheme(scheme, [&](auto& s) { out = evolve(s, q, box, run, hooks); });
     // The budget ends the run with its verdict; a state gone bad on the last step also has
     // steps == budget, so the particles are checked as well.
     if (out.steps != steps || first_bad(q)) throw std::runtime_error("bench: the uniform gas went bad: " + out.verdict);
@@ -131,7 +134,8 @@ inline sph::Particles<3> shuffled(const sph::Particles<3>& p) {
   return q;
 }
 
-inline HydroTimes time_hydro_step(sph::Particles<3>& p, const sph::Box<3>& box, const Timer& timer) {
+inline HydroTimes time_hydro_step(const std::string& scheme, sph::Particles<3>& p, const sph::Box<3>& box,
+                                  const Timer& timer) {
   using namespace sph;
   std::mt19937_64 rng(3);
   std::normal_distribution<double> g(0.0, 0.1);
@@ -139,27 +143,31 @@ inline HydroTimes time_hydro_step(sph::Particles<3>& p, const sph::Box<3>& box, 
     p.u[i] = 1.0;
     p.v[i] = Vec<3>(g(rng), g(rng), g(rng));  // random motion: about half the pairs approach (viscosity on)
   }
-  using Forces = Scene<3, EquationOfState<3, IdealGas>, EulerSymmetric<3, Lambda2>, EnergySymmetric<3, Lambda2>,
-                       ArtificialViscosity<3>>;
   NeighbourList nl = grid_search<3>(p.x, p.h, box);
   density_summation<3>(p, nl, box);
   Derivatives<3> d, at_t;
-  Forces forces;
   HydroTimes t{};
   t.pairs = static_cast<double>(nl.pairs());
-  t.forces = timer(whole([&] { forces.derivatives(p, Neighbourhood<3>{nl, box}, d); }));
-  StepScene step;
-  GridSearchBuffers<3> buffers;  // kept, as evolve's lists keep theirs: fresh ones fault pages in every step
-  auto derivs = [&](Particles<3>& q, Derivatives<3>& dd) {
-    grid_search<3>(q.x, q.h, box, nl, buffers);
-    step.derivatives(q, Neighbourhood<3>{nl, box}, dd);
-  };
-  derivs(p, d);
-  t.step_fresh_search = timer(whole([&] { kdk_leapfrog_step(p, d, at_t, 1e-4, derivs); }));
-  std::tie(t.step, t.searches_per_step) = time_evolve_step(p, box, timer);
+  with_bench_scheme(scheme, [&](auto& s) {
+    t.forces = timer(whole([&] { s.force(p, Neighbourhood<3>{nl, box}, d); }));
+    // The scheme's step, its rates on lists searched afresh at every evaluation.
+    GridSearchBuffers<3> buffers;  // kept, as evolve's lists keep theirs: fresh ones fault pages in every step
+    auto derivs = [&](Particles<3>& q, Derivatives<3>& dd) {
+      grid_search<3>(q.x, q.h, box, nl, buffers);
+      const Neighbourhood<3> nb{nl, box};
+      s.density(q, nb);
+      s.force(q, nb, dd);
+    };
+    derivs(p, d);
+    t.step_fresh_search = timer(whole([&] {
+      kdk_leapfrog_step(p, d, at_t, 1e-4, derivs);
+      if constexpr (requires { s.after_step(p, box); }) s.after_step(p, box);
+    }));
+  });
+  std::tie(t.step, t.searches_per_step) = time_evolve_step(scheme, p, box, timer);
   // Particle state (x, v: 6 doubles; m, rho, p, c, u, h: 6), derivatives (dv/dt: 3; du/dt,
-  // drho/dt, dh/dt, mu_max: 4) and the KDK step's scratch of them, neighbour list (one int per pair,
-  // an offset and a place in the visiting order per particle).
+  // drho/dt, dh/dt, mu_max: 4) and the KDK step's scratch of them, the rates' neighbour list (one
+  // int per pair, an offset and a place in the visiting order per particle).
   t.bytes_per_particle = (12 + 7 + 7) * 8.0 + 12.0 + 4.0 * t.pairs / p.size();
   return t;
 }

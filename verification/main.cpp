@@ -300,6 +300,7 @@ void add_bench_command(CLI::App& app) {
   cmd->add_option("--tree-max", o->tree_max, "largest N for the tree");
   cmd->add_option("--direct-max", o->direct_max, "largest N for the O(N^2) direct sum");
   cmd->add_option("--shuffled-max", o->shuffled_max, "largest N for the step from particles stored shuffled");
+  cmd->add_option("--scheme", o->scheme, "the SPH scheme timed (default: the chapter's, which the blast cases verify)");
   cmd->add_option("--out", o->out, "output directory (bench.json)");
   cmd->callback([o] { bench_command(*o); });
 }

@@ -90,16 +90,26 @@ struct HydroHooks {
   bool none() const { return !constrain && !evaluated && !stepped; }
 };
 
-// The rates of a scene at a state with its neighbourhood: all that evolve needs of a scene.
+// The rates of a scene at a state with its neighbourhood, and its time-step rule at a state with
+// its rates: all that evolve needs of a scene or a scheme.
 template <int D>
 using SceneRates = std::function<void(Particles<D>&, const Neighbourhood<D>&, Derivatives<D>&)>;
-
-// evolve's loop, behind SceneRates: compiled once per dimension, not once per scene type (a case
-// choosing among 72 scenes would otherwise compile 72 copies of the integrators and this loop).
-// visc (may be null) sets the viscous signal speed of the Courant step; reorderable: the scene keeps
-// no arrays over the particles (HydroControls::reorder_every).
 template <int D>
-HydroOutcome evolve_rates(const SceneRates<D>& rates, const ArtificialViscosity<D>* visc, Particles<D>& p,
+using TimeStepRule = std::function<double(const Particles<D>&, const Derivatives<D>&)>;
+
+// The time step of TimeStepControl's criterion: the Courant condition with the viscosity's alpha and
+// beta in its signal speed (0 without viscosity), or (43).
+template <int D>
+double hydro_time_step(const Particles<D>& p, const Derivatives<D>& d, double alpha, double beta,
+                       const TimeStepControl& c) {
+  return c.criterion == TimeStepCriterion::courant ? courant_time_step(p, d, alpha, beta, c) : chapter_time_step(p, c);
+}
+
+// evolve's loop, behind SceneRates and TimeStepRule: compiled once per dimension, not once per scene
+// type (a case choosing among 72 scenes would otherwise compile 72 copies of the integrators and this
+// loop). reorderable: the scene keeps no arrays over the particles (HydroControls::reorder_every).
+template <int D>
+HydroOutcome evolve_rates(const SceneRates<D>& rates, const TimeStepRule<D>& time_step, Particles<D>& p,
                           const Box<D>& box, const HydroControls& c, const HydroHooks<D>& hooks, bool reorderable) {
   Derivatives<D> d, at_t;  // at_t: the KDK step's scratch
   HydroOutcome out;
@@ -135,9 +145,7 @@ HydroOutcome evolve_rates(const SceneRates<D>& rates, const ArtificialViscosity<
         storage.apply(lists.renumber_in_visiting_order(), p, d);
         reordered_at = out.steps, searched = lists.searches(), ++out.reorders;
       }
-      double dt = c.step.criterion == TimeStepCriterion::courant
-                      ? courant_time_step(p, d, visc ? visc->alpha : 0.0, visc ? visc->beta : 0.0, c.step)
-                      : chapter_time_step(p, c.step);
+      double dt = time_step(p, d);
       if (!(dt > 0.0) || !std::isfinite(dt)) return bad_state("time step not positive and finite");
       dt = std::min(dt, c.t_end - out.t);
       if (c.integrator == IntegratorKind::kdk) kdk_leapfrog_step(p, d, at_t, dt, derivs);
@@ -154,16 +162,23 @@ HydroOutcome evolve_rates(const SceneRates<D>& rates, const ArtificialViscosity<
   return ended();
 }
 
-// Advances the particles to c.t_end. Ends with "ok", or with the first step and particle where
-// the state went bad, or with the step budget exhausted; never throws on a blow-up.
+// Advances the particles of a bare scene (one that is not a scheme, sph/schemes/) to c.t_end: its
+// rates are the scene's derivatives, its time step hydro_time_step's with the ArtificialViscosity
+// the scene lists, if any. Ends with "ok", or with the first step and particle where the state went
+// bad, or with the step budget exhausted; never throws on a blow-up.
 template <int D, class... Terms>
 HydroOutcome evolve(Scene<D, Terms...>& scene, Particles<D>& p, const Box<D>& box, const HydroControls& c,
                     const HydroHooks<D>& hooks = {}) {
-  const ArtificialViscosity<D>* visc = nullptr;
-  if constexpr ((std::is_same_v<Terms, ArtificialViscosity<D>> || ...))
-    visc = &scene.template term<ArtificialViscosity<D>>();
+  double alpha = 0.0, beta = 0.0;
+  if constexpr ((std::is_same_v<Terms, ArtificialViscosity<D>> || ...)) {
+    const auto& visc = scene.template term<ArtificialViscosity<D>>();
+    alpha = visc.alpha, beta = visc.beta;
+  }
   auto rates = [&](Particles<D>& q, const Neighbourhood<D>& nb, Derivatives<D>& d) { scene.derivatives(q, nb, d); };
-  return evolve_rates<D>(rates, visc, p, box, c, hooks, !(keeps_particle_arrays<Terms> || ...));
+  auto time_step = [&](const Particles<D>& q, const Derivatives<D>& d) {
+    return hydro_time_step(q, d, alpha, beta, c.step);
+  };
+  return evolve_rates<D>(rates, time_step, p, box, c, hooks, !(keeps_particle_arrays<Terms> || ...));
 }
 
 }  // namespace sph

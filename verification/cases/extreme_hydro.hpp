@@ -1,31 +1,20 @@
 #pragma once
-// Shared by the extreme hydro cases (sedov, noh, extreme_*, stability_map_hydro): the method's
-// parameters, the scene (summation density (27), ideal gas, Euler (23), energy (38) or (41),
-// artificial viscosity (44)-(48)) with the energy form and smoothing-length mode dispatched once
-// to a scene type, and radial profiles.
-//
-// Energy form: (23) conserves total energy exactly with either (38) or (41) (sum the pair terms
-// symmetrically). (38) changes u_i in proportion to p_i, so u_i stays positive for any small step;
-// (41) also feeds the neighbour's pressure p_j into du_i/dt, and next to a hot particle a cold one
-// expanding with it is driven to u < 0 (the Sedov blast shows it). (38) is the default here.
+// Shared by the gas cases (sedov, noh, evrard, sound_wave, extreme_degenerate; the tube helpers
+// below serve extreme_tubes and stability_map_hydro): the method's parameters, the run by the
+// scheme they name (sph/schemes/; the chapter's by default: summation density (27), ideal gas,
+// Euler (23), energy (38) or another form, artificial viscosity (44)-(48), h by (50) after every
+// step), and radial profiles.
 #include <algorithm>
 #include <cmath>
-#include <memory>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <vector>
 
 #include "sph/core/lattice.hpp"
-#include "sph/density/fixed_neighbours.hpp"
-#include "sph/density/terms.hpp"
-#include "sph/density/variable_h.hpp"
-#include "sph/hydro/energy.hpp"
-#include "sph/hydro/eos.hpp"
-#include "sph/hydro/euler.hpp"
 #include "sph/hydro/evolve.hpp"
-#include "sph/hydro/forms.hpp"
 #include "sph/kernel/kernels.hpp"
+#include "sph/schemes/schemes.hpp"
 #include "verification/cases/hydro_step_params.hpp"
 #include "verification/cases/sod_tube.hpp"
 #include "verification/params.hpp"
@@ -33,20 +22,17 @@
 
 namespace sphv::extreme {
 
-// Smoothing length: "iterate50" sets h by (50) iterated with the density after every step
-// (sph/density/fixed_neighbours.hpp); "rate53" integrates (53); "fixed" keeps the initial h.
-struct Method {
-  double gamma = 5.0 / 3.0;
-  double hfact = 2.4;
-  double alpha = 1.0, beta = 2.0;
-  std::string hmode = "iterate50";
-  std::string energy = "38";
-  double h_max = 1e300;
+// The scheme by name (sph/schemes/schemes.hpp) with its options (sph::SchemeOptions: hmode
+// "iterate50" sets h by (50) iterated with the density after every step, "rate53" integrates
+// (53), "fixed" keeps the initial h), and the run's controls.
+struct Method : sph::SchemeOptions {
+  std::string scheme = sph::default_scheme();
   sph::HydroControls controls;
 };
 
 inline std::vector<ParamSpec> method_params(double gamma, double hfact) {
   std::vector<ParamSpec> ps = {
+      choice_param("scheme", sph::default_scheme(), "SPH scheme (sph/schemes/)", sph::scheme_names()),
       real_param("gamma", gamma, "adiabatic index", 1.0),
       real_param("hfact", hfact, "support radius / particle spacing, fixes the neighbour number (50)", 0.0),
       choice_param("energy", "38", "energy form paired with Euler (23)", {"37", "38", "40", "41", "42"}),
@@ -61,6 +47,7 @@ inline std::vector<ParamSpec> method_params(double gamma, double hfact) {
 
 inline Method method(const Params& p) {
   Method m;
+  m.scheme = p.text("scheme");
   m.gamma = p.real("gamma");
   m.hfact = p.real("hfact");
   m.hmode = p.text("hmode");
@@ -72,55 +59,20 @@ inline Method method(const Params& p) {
   return m;
 }
 
-template <int D>
-using Gas = sph::EquationOfState<D, sph::IdealGas>;
-template <int D, class Energy, class... Extra>
-using GasScene = sph::Scene<D, sph::SummationDensity<D>, Gas<D>, sph::EulerSymmetric<D, sph::Lambda1>, Energy,
-                            sph::ArtificialViscosity<D>, Extra...>;
-// The default method's scene (energy (38)) with the kernel K.
-template <int D, class K>
-using KernelGasScene = sph::Scene<D, sph::SummationDensity<D, K>, Gas<D>, sph::EulerSymmetric<D, sph::Lambda1>,
-                                  sph::EnergyAsymmetric<D, sph::EnergyForm::difference38>, sph::ArtificialViscosity<D>>;
-
-// Evolves p to m.controls.t_end. The initial h comes from (50) iterated with the density (also
-// in "fixed" mode, where h then stays). Never throws on a blow-up: the outcome has the verdict.
-// `extra` terms (e.g. sph::SelfGravity) are appended to the scene by reference, so the caller
-// can read what they keep (e.g. the potential) from its hooks.
+// Evolves p to m.controls.t_end by the scheme m names with the cubic spline (6). Never throws on a
+// blow-up: the outcome has the verdict. `extra` terms (e.g. sph::SelfGravity) are appended to the
+// scheme's force loop by reference, so the caller can read what they keep (e.g. the potential) from
+// its hooks.
 template <int D, class... Extra>
 sph::HydroOutcome evolve_gas(sph::Particles<D>& p, const sph::Box<D>& box, const Method& m,
                              sph::HydroHooks<D> hooks = {}, Extra&... extra) {
-  const sph::SmoothingLengthControl hc{m.hfact, m.h_max};
-  try {
-    sph::smoothing_length_iterate(p, box, hc);
-  } catch (const std::invalid_argument& e) {
-    return {0, 0.0, std::string("unstable: initial smoothing length: ") + e.what()};
-  }
-  const Gas<D> eos{{m.gamma}};
-  const sph::ArtificialViscosity<D> visc{m.alpha, m.beta, 0.01, 0.5};
-  if (m.hmode == "iterate50") {
-    // (50) iterated for every particle alike: the run may reorder them unless the caller's hooks
-    // need its order.
-    if (hooks.none()) hooks.index_free = true;
-    auto user = hooks.constrain;
-    auto lists = std::make_shared<sph::VerletList<D>>(hc.skin);  // reused from step to step
-    hooks.constrain = [user, hc, &box, lists](sph::Particles<D>& q, double t) {
-      if (user) user(q, t);
-      sph::smoothing_length_iterate(q, box, hc, *lists);
-    };
-  }
-  auto with_h = [&](auto energy) {
-    using E = decltype(energy);
-    if (m.hmode == "rate53") {
-      GasScene<D, E, sph::SmoothingLengthRate<D>, Extra&...> s{{{}, eos, {}, energy, visc, {}, extra...}};
-      return sph::evolve(s, p, box, m.controls, hooks);
-    }
-    GasScene<D, E, Extra&...> s{{{}, eos, {}, energy, visc, extra...}};
-    return sph::evolve(s, p, box, m.controls, hooks);
-  };
-  return sph::with_energy_form<D>(m.energy, 1.0, with_h);
+  sph::HydroOutcome out;
+  sph::with_scheme<D, sph::CubicSpline<D>>(
+      m.scheme, m, [&](auto& scheme) { out = sph::evolve(scheme, p, box, m.controls, hooks); }, extra...);
+  return out;
 }
 // Without extra terms, compiled once for each dimension (extreme_gas_1d.cpp, ...) rather than in
-// every case that evolves gas (noh, sedov, extreme_degenerate): 12 scenes a dimension.
+// every case that evolves gas (noh, sedov, extreme_degenerate): 12 schemes' types a dimension.
 extern template sph::HydroOutcome evolve_gas<1>(sph::Particles<1>&, const sph::Box<1>&, const Method&,
                                                 sph::HydroHooks<1>);
 extern template sph::HydroOutcome evolve_gas<2>(sph::Particles<2>&, const sph::Box<2>&, const Method&,
@@ -128,33 +80,21 @@ extern template sph::HydroOutcome evolve_gas<2>(sph::Particles<2>&, const sph::B
 extern template sph::HydroOutcome evolve_gas<3>(sph::Particles<3>&, const sph::Box<3>&, const Method&,
                                                 sph::HydroHooks<3>);
 
-// Evolves p as evolve_gas does with the default method (hmode iterate50, energy (38)) and no hooks,
-// with the kernel K in the density (27), the (50) iteration and the pair loop. Throws
-// std::invalid_argument for another method: one scene a kernel (each scene costs compile time).
+// Evolves p as evolve_gas does with the default scheme's default forms (hmode iterate50, energy
+// (38)) and no hooks, with the kernel K in the density (27), the (50) iteration and the pair loop.
+// Throws std::invalid_argument for another method: one scheme type a kernel (each costs compile
+// time).
 template <int D, class K>
 sph::HydroOutcome evolve_gas_with_kernel(sph::Particles<D>& p, const sph::Box<D>& box, const Method& m) {
-  if (m.hmode != "iterate50" || m.energy != "38")
-    throw std::invalid_argument(std::string("kernel ") + K::name + " runs with hmode=iterate50, energy=38 only");
-  const sph::SmoothingLengthControl hc{m.hfact, m.h_max};
-  try {
-    sph::smoothing_length_iterate<D, K>(p, box, hc);
-  } catch (const std::invalid_argument& e) {
-    return {0, 0.0, std::string("unstable: initial smoothing length: ") + e.what()};
-  }
-  const Gas<D> eos{{m.gamma}};
-  const sph::ArtificialViscosity<D> visc{m.alpha, m.beta, 0.01, 0.5};
-  sph::HydroHooks<D> hooks;
-  hooks.index_free = true;
-  auto lists = std::make_shared<sph::VerletList<D>>(hc.skin);
-  hooks.constrain = [hc, &box, lists](sph::Particles<D>& q, double) {
-    sph::smoothing_length_iterate<D, K>(q, box, hc, *lists);
-  };
-  KernelGasScene<D, K> s{{{}, eos, {}, {}, visc}};
-  return sph::evolve(s, p, box, m.controls, hooks);
+  if (m.scheme != sph::ChapterScheme::name || m.hmode != "iterate50" || m.energy != "38")
+    throw std::invalid_argument(std::string("kernel ") + K::name + " runs with scheme=" + sph::ChapterScheme::name +
+                                ", hmode=iterate50, energy=38 only");
+  sph::Chapter<D, K> scheme(m, {});
+  return sph::evolve(scheme, p, box, m.controls);
 }
 
 // evolve_gas_with_kernel for the kernel named (not the cubic spline: evolve_gas), compiled in units
-// of their own (extreme_gas_kernels_2d.cpp, _3d.cpp) beside the cubic's 12 scenes a dimension.
+// of their own (extreme_gas_kernels_2d.cpp, _3d.cpp) beside the cubic's 12 scheme types a dimension.
 template <int D>
 sph::HydroOutcome evolve_gas_other_kernel(const std::string& kernel, sph::Particles<D>& p, const sph::Box<D>& box,
                                           const Method& m) {
