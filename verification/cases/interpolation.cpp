@@ -147,8 +147,9 @@ OrderClaims orders(const Params& p) {
   return {{"L2_f", two}, {"L2_grad19", floor("L2_grad19")}, {"L2_grad32", floor("L2_grad32")}};
 }
 
-// CPU (user, one thread): quick 2.0 s and standard 2.9 s for all five variants together; cost
-// ~ N at fixed h/dx: full's 2D n = 512 (262k particles) ~4 s, 1D n = 1024 negligible (estimated).
+// CPU (user, one thread): quick 2.0 s and standard 2.9 s for the first five variants together;
+// the 3D root variant costs ~1.4 times the 3D one (its neighbours, (2.627/2)^3 = 2.3 times);
+// cost ~ N at fixed h/dx: full's 2D n = 512 (262k particles) ~4 s, 1D n = 1024 negligible (estimated).
 const Levels levels = {.quick = {16, 32, 64}, .standard = {16, 32, 64, 128, 256}, .full = {16, 32, 64, 128, 256, 512}};
 
 // 3D lattices above 64^3 take tens of seconds per level: the standard sweep stops there; full
