@@ -101,6 +101,27 @@ double two_pass_symbol(const sph::Vec<D>& k, double ratio, double dx) {
   return gradient_symbol<D>(k, ratio, dx).squaredNorm();
 }
 
+// Relative error of the Hessian tensor (73) (errata: the (d + 2) factor) on the sine product
+// prod_a sin(k_a x_a) with k_a = k for every a: for the mode exp(i q.x) its symbol is
+// H(q) = sum_r V (cos(q.r) - 1) F(r) ((d + 2) r r^T / r^2 - I), F = -W'(r) / r, against the exact
+// -q q^T. Every mode q = k (+-1, ..., +-1) of the product has the same relative error e_d on the
+// diagonal and e_o off it, and the exact components have equal mean squares over the box, so
+// the Frobenius error is sqrt((d e_d^2 + d (d - 1) e_o^2) / d^2).
+template <int D>
+double hessian_symbol_error(double k, double ratio, double dx) {
+  double diag = 0.0, off = 0.0;
+  const double h = ratio * dx;
+  for_each_offset<D>(ratio, [&](const sph::Vec<D>& o) {
+    const sph::Vec<D> r = o * dx;
+    const double rn = r.norm(), c = (std::cos(k * r.sum()) - 1.0) * -sph::CubicSpline<D>::dWdr(rn, h) / rn;
+    diag += c * ((D + 2.0) * r[0] * r[0] / (rn * rn) - 1.0);
+    if constexpr (D > 1) off += c * (D + 2.0) * r[0] * r[1] / (rn * rn);
+  });
+  const double V = std::pow(dx, D) / lattice_kernel_sum<D>(ratio);
+  const double e_d = diag * V / -(k * k) - 1.0, e_o = D > 1 ? off * V / -(k * k) - 1.0 : 0.0;
+  return std::sqrt((D * e_d * e_d + D * (D - 1) * e_o * e_o) / (D * D));
+}
+
 // Largest eigenvalue over the modes k = 2 pi m, 0 <= m_a <= n/2, of the periodic n^D lattice
 // (the symbols are even in each k_a).
 template <int D, class Symbol>

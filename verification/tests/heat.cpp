@@ -18,6 +18,10 @@ TEST_CASE("heat: bad input is refused", "[heat][input]") {
   CHECK_THROWS_AS(c.parse({"form=sixth"}), sphv::InputError);
   CHECK_THROWS_AS(c.parse({"n=4"}), sphv::InputError);  // support radius above half the box
   CHECK_THROWS_AS(sphv::find_case("laplacian").parse({"dim=4"}), sphv::InputError);
+  // h/dx growing with n: h must still fall with n.
+  CHECK_THROWS_AS(sphv::find_case("laplacian").parse({"hgrow=1"}), sphv::InputError);
+  CHECK_THROWS_AS(sphv::find_case("laplacian").parse({"hgrow=-0.5"}), sphv::InputError);
+  CHECK_NOTHROW(sphv::find_case("laplacian").parse({"hgrow=0.5", "n=64"}));
 }
 
 TEST_CASE("heat: an unstable explicit run ends with a verdict, not a NaN", "[heat][extreme]") {
