@@ -163,6 +163,7 @@ TEST_CASE("gate: kepler", "[gate][gravity]") { gate("kepler"); }
 TEST_CASE("gate: kernel", "[gate][kernel]") { gate("kernel"); }
 TEST_CASE("gate: laplacian", "[gate][laplacian]") { gate("laplacian"); }
 TEST_CASE("gate: noh", "[gate][extreme][noh]") { gate("noh"); }
+TEST_CASE("gate: polytrope", "[gate][polytrope]") { gate("polytrope"); }
 TEST_CASE("gate: sedov", "[gate][extreme][sedov]") { gate("sedov"); }
 TEST_CASE("gate: sod", "[gate][sod]") { gate("sod"); }
 TEST_CASE("gate: sod2d", "[gate][sod2d]") { gate("sod2d"); }
