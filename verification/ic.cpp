@@ -11,6 +11,7 @@
 #include "verification/cases/heat_errors.hpp"
 #include "verification/cases/heat_lattice.hpp"
 #include "verification/cases/noh_setup.hpp"
+#include "verification/cases/polytrope_setup.hpp"
 #include "verification/cases/sedov_setup.hpp"
 #include "verification/cases/sod_errors.hpp"
 #include "verification/cases/sod_simulate.hpp"
@@ -138,6 +139,17 @@ InitialState evrard_ic(const Params& p, IcLayout layout) {
                 p.real("gamma"), layout, 50.0, 100.0);
 }
 
+// The stretched lattice of the n = 1 polytrope around the origin, at rest, rho and u = K rho /
+// (gamma - 1) of the profile, h from (50) with the profile's density (polytrope_setup.hpp; a run
+// replaces rho by the summation (27) and u by K rho_i / (gamma - 1) with it). SWIFT's layout: the
+// star at the centre (5, 5, 5) of a box of side 10, five radii across at K = 2 / pi, G = 1.
+InitialState polytrope_ic(const Params& p, IcLayout layout) {
+  const reference::Polytrope1 star = polytrope::star(p);
+  const double side = 10.0 * star.radius();
+  return placed(at_start(polytrope::sphere(p.integer("n"), star, p.real("gamma"), p.real("hfact")), p.real("gamma")),
+                p.real("gamma"), layout, side / 2.0, side);
+}
+
 // The lattice in the periodic unit box with the summation density, u = c_v T(x, 0) of the chosen
 // set-up (setup=gauss or sine; heat_errors.hpp); no pressure (conduction only). The unit box is
 // SWIFT's layout too.
@@ -167,7 +179,8 @@ InitialState sound_wave_ic(const Params& p, IcLayout layout) {
 const std::map<std::string, InitialConditions>& ics() {
   static const std::map<std::string, InitialConditions> m = {
       {"sod", tube_ic<1>}, {"sod2d", tube_ic<2>}, {"sod3d", tube_ic<3>}, {"sedov", sedov_ic},
-      {"noh", noh_ic},     {"evrard", evrard_ic}, {"heat", heat_ic}, {"sound_wave", sound_wave_ic}};
+      {"noh", noh_ic},     {"evrard", evrard_ic}, {"heat", heat_ic}, {"sound_wave", sound_wave_ic},
+      {"polytrope", polytrope_ic}};
   return m;
 }
 

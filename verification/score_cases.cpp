@@ -11,6 +11,7 @@
 #include "verification/cases/gravity_compare.hpp"
 #include "verification/cases/heat_errors.hpp"
 #include "verification/cases/noh_errors.hpp"
+#include "verification/cases/polytrope_errors.hpp"
 #include "verification/cases/sedov_errors.hpp"
 #include "verification/cases/sod_errors.hpp"
 #include "verification/cases/sound_wave_errors.hpp"
@@ -192,6 +193,32 @@ Result score_evrard(const Params& prm, const Snapshot& s) {
   return r;
 }
 
+// The star's reference has the file's total mass and K, G of --set (defaults 2 / pi and 1: R = 1
+// at M = 1); the centre is the file's box middle, --set centre or the origin (score.cpp records
+// which), and the centre of mass's distance from it is reported beside the errors.
+Result score_polytrope(const Params& prm, const Snapshot& s) {
+  const std::string who = "polytrope";
+  positive(s, "rho", who);
+  positive(s, "m", who);
+  if (s.dim != 3) throw InputError(s.path.string() + ": polytrope needs 3D particles (x, y, z), the file has " +
+                                   std::to_string(s.dim) + " coordinate(s)");
+  const auto& m = s.at("m", who);
+  double mass = 0.0;
+  for (double mi : m) mass += mi;
+  const std::vector<sph::Vec<3>> x = vectors<3>(s, "", who, radial::centre<3>(prm));
+  sph::Vec<3> com = sph::Vec<3>::Zero();
+  for (std::size_t i = 0; i < x.size(); ++i) com += m[i] * x[i];
+  Result r;
+  try {
+    polytrope::measure(r, polytrope::radii(x, sph::Vec<3>::Zero().eval()), m, s.at("rho", who), prm.real("K"),
+                       prm.real("G"), prm.real("t_end"));
+  } catch (const std::invalid_argument& e) {  // K or G not positive
+    throw InputError(std::string("polytrope: ") + e.what());
+  }
+  r.extra["centre_of_mass_offset"] = (com / mass).norm();
+  return r;
+}
+
 Result score_heat(const Params& prm, const Snapshot& s) {
   const std::string who = "heat";
   positive(s, "rho", who);
@@ -244,6 +271,7 @@ const std::map<std::string, Scorer>& scorers() {
       {"noh", {"t_end", score_noh, real_t_end, Resolution::per_length, real_gamma}},
       {"evrard", {"t_end", score_evrard, real_t_end, Resolution::count, real_gamma}},
       {"sound_wave", {"t_end", score_sound_wave, real_t_end, Resolution::per_length, real_gamma}},
+      {"polytrope", {"t_end", score_polytrope, real_t_end, Resolution::count, real_gamma}},
       {"heat", {"t_end", score_heat, real_t_end}},
       {"gravity", {"", score_gravity, {}}}};
   return s;
