@@ -24,6 +24,7 @@ struct Scorer {
   std::function<double(const Params&)> t_end;     // the time a run of these parameters ends at (may be empty)
   Resolution n = Resolution::none;
   std::function<double(const Params&)> gamma;     // the adiabatic index in use (empty: the case has none)
+  std::vector<std::string> constants = {};        // parameters no file states (e.g. K, G): from --set or default
 };
 
 // The scorer of a case, or an InputError listing the cases that have one.

@@ -271,7 +271,7 @@ const std::map<std::string, Scorer>& scorers() {
       {"noh", {"t_end", score_noh, real_t_end, Resolution::per_length, real_gamma}},
       {"evrard", {"t_end", score_evrard, real_t_end, Resolution::count, real_gamma}},
       {"sound_wave", {"t_end", score_sound_wave, real_t_end, Resolution::per_length, real_gamma}},
-      {"polytrope", {"t_end", score_polytrope, real_t_end, Resolution::count, real_gamma}},
+      {"polytrope", {"t_end", score_polytrope, real_t_end, Resolution::count, real_gamma, {"K", "G"}}},
       {"heat", {"t_end", score_heat, real_t_end}},
       {"gravity", {"", score_gravity, {}}}};
   return s;
