@@ -292,6 +292,9 @@ Result score_snapshot(const Case& c, std::vector<std::string> settings, const Sn
   complete_centre(k, dim);
   complete_tube(k);
   complete_n(k, sc);
+  for (const std::string& key : sc.constants)
+    for (const ParamSpec& ps : c.params)
+      if (ps.name == key) k.set_or_default(key, ps.default_value, "the case's: no file states it");
   const Params p = c.parse(k.settings);
   check_equation_of_state(k, p, sc);
   const auto t0 = std::chrono::steady_clock::now();

@@ -258,3 +258,22 @@ add_test(NAME score_swift_sod_via_csv COMMAND bash -c
   "$<TARGET_FILE:sphv> convert --input ${_data}/swift_sod1d_orig_t0.2.hdf5 --out swift_sod.csv --format csv > /dev/null && $<TARGET_FILE:sphv> score sod --snapshot swift_sod.csv --out via_csv > via_csv.txt && $<TARGET_FILE:sphv> score sod --snapshot ${_data}/swift_sod1d_orig_t0.2.hdf5 --out via_hdf5 > via_hdf5.txt && grep -q 'ends=periodic (file: # periodic comment' via_csv.txt && test \"$(grep '^sod,' via_csv.txt | sed 's/; written.*//')\" = \"$(grep '^sod,' via_hdf5.txt | sed 's/; written.*//')\" && echo PASS"
   WORKING_DIRECTORY ${_sdir})
 set_tests_properties(score_swift_sod_via_csv PROPERTIES PASS_REGULAR_EXPRESSION "PASS")
+
+# polytrope: the initial conditions in SWIFT's layout (the star at the middle of a box of side 10)
+# score the profile they were drawn from at t = 0, around the file's box middle, with K and G the
+# case's defaults (recorded as such); sphv run's
+# particles score to the run's own error; bad input refused with one line and exit 2.
+add_test(NAME ic_polytrope_scored_at_t0 COMMAND bash -c
+  "rm -rf poly_ic0* && $<TARGET_FILE:sphv> ic polytrope --set n=552 --out poly_ic0.hdf5 --format swift && $<TARGET_FILE:sphv> score polytrope --snapshot poly_ic0.hdf5 --out poly_ic0 && python3 -c 'import json, sys; r = json.load(open(sys.argv[1])); e, v = r[\"errors\"], r[\"extra\"][\"snapshot\"][\"values\"]; print(\"errors\", e, \"values\", v); sys.exit(0 if e[\"rho_profile_L1\"] < 1e-12 and v[\"K\"][\"from\"].startswith(\"default\") and v[\"G\"][\"value\"] == \"1\" and v[\"centre\"][\"value\"] == \"5,5,5\" else 1)' poly_ic0/result.json && echo PASS"
+  WORKING_DIRECTORY ${_sdir})
+set_tests_properties(ic_polytrope_scored_at_t0 PROPERTIES PASS_REGULAR_EXPRESSION "centre=5,5,5 \\(file: the middle of its box(.|\n)*PASS")
+add_test(NAME score_polytrope_round_trip COMMAND bash -c
+  "rm -rf poly_run poly_score && $<TARGET_FILE:sphv> --threads 1 run polytrope --set n=200 t_end=0.5 --out poly_run && $<TARGET_FILE:sphv> convert --input poly_run/particles.csv --out poly.hdf5 --format swift --time 0.5 && $<TARGET_FILE:sphv> score polytrope --snapshot poly.hdf5 --out poly_score && python3 ${CMAKE_SOURCE_DIR}/verification/tests/compare_score_run.py poly_score/result.json poly_run/result.json rho_profile_L1"
+  WORKING_DIRECTORY ${_sdir})
+set_tests_properties(score_polytrope_round_trip PROPERTIES PASS_REGULAR_EXPRESSION "PASS: 1 errors equal")
+sphv_refuses(polytrope_gamma run polytrope --set gamma=1.4)
+sphv_refuses(polytrope_few_particles run polytrope --set n=50)
+sphv_refuses(polytrope_centre_in_run run polytrope --set centre=1,0,0)
+sphv_refuses(polytrope_ic_negative_K ic polytrope --set K=-1 --out ${_sdir}/poly_bad.csv)
+file(WRITE ${_sdir}/polytrope_1d.csv "# time = 1\nx,vx,m,rho,u\n0.1,0,1,1,1\n")
+score_refuses(polytrope_not_3d polytrope ${_sdir}/polytrope_1d.csv)

@@ -3,6 +3,7 @@
 // scores it against the case's reference.
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "verification/params.hpp"
 #include "verification/result.hpp"
@@ -22,6 +23,7 @@ struct Scorer {
   std::function<double(const Params&)> t_end;     // the time a run of these parameters ends at (may be empty)
   Resolution n = Resolution::none;
   std::function<double(const Params&)> gamma;     // the adiabatic index in use (empty: the case has none)
+  std::vector<std::string> constants = {};        // parameters no file states (e.g. K, G): from --set or default
 };
 
 }  // namespace sphv
