@@ -153,6 +153,7 @@ TEST_CASE("gate: extreme_degenerate", "[gate][extreme]") { gate("extreme_degener
 TEST_CASE("gate: extreme_timestep43", "[gate][extreme]") { gate("extreme_timestep43"); }
 TEST_CASE("gate: extreme_tubes", "[gate][extreme]") { gate("extreme_tubes"); }
 TEST_CASE("gate: gravity", "[gate][gravity]") { gate("gravity"); }
+TEST_CASE("gate: gresho", "[gate][gresho]") { gate("gresho"); }
 TEST_CASE("gate: gravity_analytic", "[gate][gravity]") { gate("gravity_analytic"); }
 TEST_CASE("gate: gravity_sw", "[gate][gravity]") { gate("gravity_sw"); }
 TEST_CASE("gate: heat", "[gate][heat]") { gate("heat"); }
