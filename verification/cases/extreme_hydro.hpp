@@ -128,13 +128,14 @@ extern template sph::HydroOutcome evolve_gas<2>(sph::Particles<2>&, const sph::B
 extern template sph::HydroOutcome evolve_gas<3>(sph::Particles<3>&, const sph::Box<3>&, const Method&,
                                                 sph::HydroHooks<3>);
 
-// Evolves p as evolve_gas does with the default method (hmode iterate50, energy (38)) and no hooks,
-// with the kernel K in the density (27), the (50) iteration and the pair loop. Throws
-// std::invalid_argument for another method: one scene a kernel (each scene costs compile time).
+// Evolves p as evolve_gas does with energy (38), hmode iterate50 or fixed, and no hooks, with the
+// kernel K in the density (27), the (50) iteration and the pair loop. Throws
+// std::invalid_argument for another method: one scene a kernel (each scene costs compile time;
+// the two h modes differ only in the hooks, not in the scene).
 template <int D, class K>
 sph::HydroOutcome evolve_gas_with_kernel(sph::Particles<D>& p, const sph::Box<D>& box, const Method& m) {
-  if (m.hmode != "iterate50" || m.energy != "38")
-    throw std::invalid_argument(std::string("kernel ") + K::name + " runs with hmode=iterate50, energy=38 only");
+  if ((m.hmode != "iterate50" && m.hmode != "fixed") || m.energy != "38")
+    throw std::invalid_argument(std::string("kernel ") + K::name + " runs with hmode=iterate50 or fixed, energy=38 only");
   const sph::SmoothingLengthControl hc{m.hfact, m.h_max};
   try {
     sph::smoothing_length_iterate<D, K>(p, box, hc);
@@ -144,17 +145,20 @@ sph::HydroOutcome evolve_gas_with_kernel(sph::Particles<D>& p, const sph::Box<D>
   const Gas<D> eos{{m.gamma}};
   const sph::ArtificialViscosity<D> visc{m.alpha, m.beta, 0.01, 0.5};
   sph::HydroHooks<D> hooks;
-  hooks.index_free = true;
-  auto lists = std::make_shared<sph::VerletList<D>>(hc.skin);
-  hooks.constrain = [hc, &box, lists](sph::Particles<D>& q, double) {
-    sph::smoothing_length_iterate<D, K>(q, box, hc, *lists);
-  };
+  if (m.hmode == "iterate50") {
+    hooks.index_free = true;
+    auto lists = std::make_shared<sph::VerletList<D>>(hc.skin);
+    hooks.constrain = [hc, &box, lists](sph::Particles<D>& q, double) {
+      sph::smoothing_length_iterate<D, K>(q, box, hc, *lists);
+    };
+  }
   KernelGasScene<D, K> s{{{}, eos, {}, {}, visc}};
   return sph::evolve(s, p, box, m.controls, hooks);
 }
 
 // evolve_gas_with_kernel for the kernel named (not the cubic spline: evolve_gas), compiled in units
-// of their own (extreme_gas_kernels_2d.cpp, _3d.cpp) beside the cubic's 12 scenes a dimension.
+// of their own (extreme_gas_kernels_1d.cpp, _2d.cpp, _3d.cpp) beside the cubic's 12 scenes a
+// dimension.
 template <int D>
 sph::HydroOutcome evolve_gas_other_kernel(const std::string& kernel, sph::Particles<D>& p, const sph::Box<D>& box,
                                           const Method& m) {
@@ -166,6 +170,8 @@ sph::HydroOutcome evolve_gas_other_kernel(const std::string& kernel, sph::Partic
   });
   return out;
 }
+extern template sph::HydroOutcome evolve_gas_other_kernel<1>(const std::string&, sph::Particles<1>&, const sph::Box<1>&,
+                                                            const Method&);
 extern template sph::HydroOutcome evolve_gas_other_kernel<2>(const std::string&, sph::Particles<2>&, const sph::Box<2>&,
                                                             const Method&);
 extern template sph::HydroOutcome evolve_gas_other_kernel<3>(const std::string&, sph::Particles<3>&, const sph::Box<3>&,
