@@ -14,6 +14,7 @@
 #include "verification/cases/sedov_setup.hpp"
 #include "verification/cases/sod_errors.hpp"
 #include "verification/cases/sod_simulate.hpp"
+#include "verification/cases/gresho_setup.hpp"
 #include "verification/cases/sound_wave_setup.hpp"
 #include "verification/snapshot/swift_ic.hpp"
 
@@ -164,10 +165,19 @@ InitialState sound_wave_ic(const Params& p, IcLayout layout) {
   });
 }
 
+// The square lattice in the periodic unit box [0, 1)^2 with the vortex at its centre (1/2, 1/2)
+// (gresho_setup.hpp): v and u of the exact vortex, rho = rho0 (a run replaces it by the summation
+// (27)); the unit box is SWIFT's layout too.
+InitialState gresho_ic(const Params& p, IcLayout layout) {
+  gresho::check_centre(p);
+  return placed(at_start(gresho::initial_particles(p), p.real("gamma")), p.real("gamma"), layout, 0.0, 1.0);
+}
+
 const std::map<std::string, InitialConditions>& ics() {
   static const std::map<std::string, InitialConditions> m = {
       {"sod", tube_ic<1>}, {"sod2d", tube_ic<2>}, {"sod3d", tube_ic<3>}, {"sedov", sedov_ic},
-      {"noh", noh_ic},     {"evrard", evrard_ic}, {"heat", heat_ic}, {"sound_wave", sound_wave_ic}};
+      {"noh", noh_ic},     {"evrard", evrard_ic}, {"heat", heat_ic}, {"sound_wave", sound_wave_ic},
+      {"gresho", gresho_ic}};
   return m;
 }
 

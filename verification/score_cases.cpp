@@ -1,6 +1,7 @@
 // The scorers of `sphv score`: each reads the columns its case needs from a snapshot and calls
 // the same error function as the case's own run (sod_errors.hpp, sedov_errors.hpp,
-// noh_errors.hpp, evrard_errors.hpp, heat_errors.hpp, sound_wave_errors.hpp, gravity_compare.hpp).
+// noh_errors.hpp, evrard_errors.hpp, heat_errors.hpp, sound_wave_errors.hpp, gresho_errors.hpp,
+// gravity_compare.hpp).
 #include <cmath>
 #include <stdexcept>
 
@@ -9,6 +10,8 @@
 #include "verification/cases/centre_param.hpp"
 #include "verification/cases/evrard_errors.hpp"
 #include "verification/cases/gravity_compare.hpp"
+#include "verification/cases/gresho_errors.hpp"
+#include "verification/cases/gresho_setup.hpp"
 #include "verification/cases/heat_errors.hpp"
 #include "verification/cases/noh_errors.hpp"
 #include "verification/cases/sedov_errors.hpp"
@@ -162,6 +165,20 @@ Result score_sound_wave(const Params& prm, const Snapshot& s) {
   return r;
 }
 
+// The vortex at `centre` (by default the middle of the file's box, complete_centre in score.cpp),
+// at the file's time (stationary: the exact profile is the same at every time).
+Result score_gresho(const Params& prm, const Snapshot& s) {
+  const std::string who = "gresho";
+  positive(s, "m", who);
+  if (s.dim != 2)
+    throw InputError(s.path.string() + ": gresho needs 2D particles (x, y), the file has " + std::to_string(s.dim) +
+                     " coordinate(s)");
+  Result r;
+  gresho::measure(r, vectors<2>(s, "", who, radial::centre<2>(prm)), vectors<2>(s, "v", who), s.at("m", who),
+                  prm.real("t_end"), gresho::vortex(prm), prm.integer("n"));
+  return r;
+}
+
 Result score_evrard(const Params& prm, const Snapshot& s) {
   const std::string who = "evrard";
   positive(s, "rho", who);
@@ -244,6 +261,7 @@ const std::map<std::string, Scorer>& scorers() {
       {"noh", {"t_end", score_noh, real_t_end, Resolution::per_length, real_gamma}},
       {"evrard", {"t_end", score_evrard, real_t_end, Resolution::count, real_gamma}},
       {"sound_wave", {"t_end", score_sound_wave, real_t_end, Resolution::per_length, real_gamma}},
+      {"gresho", {"t_end", score_gresho, real_t_end, Resolution::per_length, real_gamma}},
       {"heat", {"t_end", score_heat, real_t_end}},
       {"gravity", {"", score_gravity, {}}}};
   return s;
