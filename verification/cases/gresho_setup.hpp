@@ -4,6 +4,7 @@
 // ((i + 1/2) / n, (j + 1/2) / n), also SWIFT's layout), all of mass rho0 / n^2, the vortex centred
 // at (1/2, 1/2); v = v_phi(r) e_phi and u = p(r) / ((gamma - 1) rho0) from the exact solution
 // (reference/gresho), h = hfact / n (the run iterates (50) from it).
+#include <algorithm>
 #include <cmath>
 
 #include "reference/gresho.hpp"
@@ -27,6 +28,18 @@ inline ParamSpec centre_param() {
 inline void check_centre(const Params& p) {
   if (radial::centre<2>(p) != sph::Vec<2>(0.5, 0.5))
     throw InputError("gresho: centre is for scoring snapshots (sphv score); sphv run and ic put the vortex at 0.5,0.5");
+}
+
+// The set-up's pressure against radial equilibrium: the largest |p(r) - p_quad(r)| / p(r) on 200
+// radii across the box (0 < r <= 0.7), p the closed form the particles' u comes from, p_quad the
+// quadrature of dp/dr = rho0 v_phi^2 / r from the centre (reference::GreshoVortex).
+inline double equilibrium_error(const reference::GreshoVortex& g) {
+  double e = 0.0;
+  for (int k = 1; k <= 200; ++k) {
+    const double r = 0.7 * k / 200.0;
+    e = std::max(e, std::abs(g.pressure(r) - g.pressure_by_quadrature(r)) / g.pressure(r));
+  }
+  return e;
 }
 
 inline sph::Particles<2> initial_particles(const Params& prm) {
