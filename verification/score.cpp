@@ -154,8 +154,8 @@ void complete_gamma(Completion& k) {
          [&](const std::string& v) { return agrees(set_number(k.c, "gamma", v), g.value.at(0), g.round_off); });
 }
 
-// The radial cases' centre: the box's middle by default; a set centre has a component per
-// dimension and lies inside a stated box.
+// The radial cases' centre: the box's middle by default (without a box, the case's default); a
+// set centre has a component per dimension and lies inside a stated box.
 void complete_centre(Completion& k, int dim) {
   if (!has_param(k.c, "centre")) return;
   const auto box = k.s.stated.find("box");
@@ -173,7 +173,8 @@ void complete_centre(Completion& k, int dim) {
                        joined(box->second.value) + "; --force to score with it)");
     return k.record("centre", *given, "--set, forced outside the file's box");
   }
-  if (box == k.s.stated.end()) return k.set_or_default("centre", "0,0,0", "the origin: the file states no box");
+  if (box == k.s.stated.end())
+    return k.set_or_default("centre", find_param(k.c, "centre")->default_value, "the case's: the file states no box");
   std::vector<double> mid;
   for (int d = 0; d < dim; ++d) mid.push_back(0.5 * (box->second.value[2 * d] + box->second.value[2 * d + 1]));
   k.settings.push_back("centre=" + joined(mid));

@@ -59,6 +59,19 @@ add_test(NAME sound_wave_bad_amplitude_exit_2 COMMAND bash -c
   "$<TARGET_FILE:sphv> run sound_wave --set A=-1e-6 --out sw_refused; a=$?; $<TARGET_FILE:sphv> ic sound_wave --set A=0.01 --out sw.csv; b=$?; test $a -eq 2 && test $b -eq 2 && test ! -e sw.csv && echo PASS"
   WORKING_DIRECTORY ${_sdir})
 set_tests_properties(sound_wave_bad_amplitude_exit_2 PROPERTIES PASS_REGULAR_EXPRESSION "PASS")
+# The Gresho vortex's IC in SWIFT's layout (the periodic unit box, the vortex at its middle), scored
+# at the file's time 0 with the centre from the file's box: v_phi exact to round-off.
+add_test(NAME ic_gresho_scored_at_t0 COMMAND bash -c
+  "$<TARGET_FILE:sphv> ic gresho --set n=16 --out gresho_ic.hdf5 && $<TARGET_FILE:sphv> score gresho --snapshot gresho_ic.hdf5 --out gresho_ic_score"
+  WORKING_DIRECTORY ${_sdir})
+set_tests_properties(ic_gresho_scored_at_t0 PROPERTIES PASS_REGULAR_EXPRESSION "centre=0.5,0.5 \\(file: the middle of its box(.|\n)*t_end=0 \\(file: /Header Time\\)(.|\n)*L1_v=[0-9.]+e-1[5-9], verdict: ok")
+# A vortex with no particles where it is, a centre off the unit box's middle in sphv run, a kernel
+# with an h mode it does not run with, and a non-positive central pressure are refused (exit 2).
+sphv_refuses(gresho_off_centre run gresho --set centre=0.3,0.5)
+sphv_refuses(gresho_kernel_rate53 run gresho --set kernel=wendland_c4 hmode=rate53)
+sphv_refuses(gresho_bad_p0 run gresho --set p0=0)
+sphv_refuses(gresho_coarse run gresho --set n=4)
+sphv_refuses(sound_wave_kernel_rate53 run sound_wave --set kernel=quintic_spline hmode=rate53)
 # The format follows the file's extension (.hdf5/.h5 SWIFT, .csv CSV) or is refused when they
 # contradict; SWIFT's tube has its interfaces where SWIFT's example puts them.
 add_test(NAME ic_format_from_extension COMMAND bash -c

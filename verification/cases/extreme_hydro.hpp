@@ -80,21 +80,22 @@ extern template sph::HydroOutcome evolve_gas<2>(sph::Particles<2>&, const sph::B
 extern template sph::HydroOutcome evolve_gas<3>(sph::Particles<3>&, const sph::Box<3>&, const Method&,
                                                 sph::HydroHooks<3>);
 
-// Evolves p as evolve_gas does with the default scheme's default forms (hmode iterate50, energy
-// (38)) and no hooks, with the kernel K in the density (27), the (50) iteration and the pair loop.
+// Evolves p as evolve_gas does with the default scheme's forms (energy (38); hmode iterate50 or
+// fixed) and no hooks, with the kernel K in the density (27), the (50) iteration and the pair loop.
 // Throws std::invalid_argument for another method: one scheme type a kernel (each costs compile
-// time).
+// time; the two h modes are the same type).
 template <int D, class K>
 sph::HydroOutcome evolve_gas_with_kernel(sph::Particles<D>& p, const sph::Box<D>& box, const Method& m) {
-  if (m.scheme != sph::ChapterScheme::name || m.hmode != "iterate50" || m.energy != "38")
+  if (m.scheme != sph::ChapterScheme::name || (m.hmode != "iterate50" && m.hmode != "fixed") || m.energy != "38")
     throw std::invalid_argument(std::string("kernel ") + K::name + " runs with scheme=" + sph::ChapterScheme::name +
-                                ", hmode=iterate50, energy=38 only");
+                                ", hmode=iterate50 or fixed, energy=38 only");
   sph::Chapter<D, K> scheme(m, {});
   return sph::evolve(scheme, p, box, m.controls);
 }
 
 // evolve_gas_with_kernel for the kernel named (not the cubic spline: evolve_gas), compiled in units
-// of their own (extreme_gas_kernels_2d.cpp, _3d.cpp) beside the cubic's 12 scheme types a dimension.
+// of their own (extreme_gas_kernels_1d.cpp, _2d.cpp, _3d.cpp) beside the cubic's 12 scheme types a
+// dimension.
 template <int D>
 sph::HydroOutcome evolve_gas_other_kernel(const std::string& kernel, sph::Particles<D>& p, const sph::Box<D>& box,
                                           const Method& m) {
@@ -106,6 +107,8 @@ sph::HydroOutcome evolve_gas_other_kernel(const std::string& kernel, sph::Partic
   });
   return out;
 }
+extern template sph::HydroOutcome evolve_gas_other_kernel<1>(const std::string&, sph::Particles<1>&, const sph::Box<1>&,
+                                                            const Method&);
 extern template sph::HydroOutcome evolve_gas_other_kernel<2>(const std::string&, sph::Particles<2>&, const sph::Box<2>&,
                                                             const Method&);
 extern template sph::HydroOutcome evolve_gas_other_kernel<3>(const std::string&, sph::Particles<3>&, const sph::Box<3>&,

@@ -1,0 +1,49 @@
+// gresho and other codes' files: the scorer of `sphv score` and the initial conditions of `sphv ic`.
+#include "verification/cases/gresho_snapshots.hpp"
+
+#include "verification/case.hpp"
+#include "verification/cases/centre_param.hpp"
+#include "verification/cases/gresho_errors.hpp"
+#include "verification/cases/gresho_setup.hpp"
+#include "verification/ic_layout.hpp"
+#include "verification/score_columns.hpp"
+
+namespace sphv::gresho_snapshots_case {
+namespace {
+
+using namespace snapshot_columns;
+
+// The vortex at `centre` (by default the middle of the file's box, complete_centre in score.cpp),
+// at the file's time (stationary: the exact profile is the same at every time).
+Result score_gresho(const Params& prm, const Snapshot& s) {
+  const std::string who = "gresho";
+  positive(s, "m", who);
+  if (s.dim != 2)
+    throw InputError(s.path.string() + ": gresho needs 2D particles (x, y), the file has " + std::to_string(s.dim) +
+                     " coordinate(s)");
+  Result r;
+  gresho::measure(r, vectors<2>(s, "", who, radial::centre<2>(prm)), vectors<2>(s, "v", who), s.at("m", who),
+                  prm.real("t_end"), gresho::vortex(prm), prm.integer("n"));
+  return r;
+}
+
+}  // namespace
+}  // namespace sphv::gresho_snapshots_case
+
+namespace sphv::gresho {
+
+Scorer scorer() {
+  return {"t_end", gresho_snapshots_case::score_gresho, snapshot_columns::real_t_end, Resolution::per_length,
+          snapshot_columns::real_gamma};
+}
+
+// The square lattice in the periodic unit box [0, 1)^2 with the vortex at its centre (1/2, 1/2)
+// (gresho_setup.hpp): v and u of the exact vortex, rho = rho0 (a run replaces it by the summation
+// (27)); the unit box is SWIFT's layout too.
+InitialState initial_conditions(const Params& p, IcLayout layout) {
+  check_centre(p);
+  return ic_layout::placed(ic_layout::at_start(initial_particles(p), p.real("gamma")), p.real("gamma"), layout, 0.0,
+                           1.0);
+}
+
+}  // namespace sphv::gresho
