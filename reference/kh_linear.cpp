@@ -22,6 +22,15 @@ double blend(double f1, double f2, double L, double y) {
   return f1 - fm * std::exp(-(y - 0.75) / L);
 }
 
+double blend_slope(double f1, double f2, double L, double y) {
+  const double fm = 0.5 * (f1 - f2);
+  y -= std::floor(y);
+  if (y < 0.25) return -fm / L * std::exp((y - 0.25) / L);
+  if (y < 0.5) return -fm / L * std::exp(-(y - 0.25) / L);
+  if (y < 0.75) return fm / L * std::exp(-(0.75 - y) / L);
+  return fm / L * std::exp(-(y - 0.75) / L);
+}
+
 // Secant iteration on a complex function from two starting points.
 cplx secant(const std::function<cplx(cplx)>& F, cplx s0, cplx s1, int& iterations, double& residual) {
   cplx f0 = F(s0), f1 = F(s1);
@@ -48,6 +57,7 @@ cplx secant(const std::function<cplx(cplx)>& F, cplx s0, cplx s1, int& iteration
 
 double KhProfile::density(double y) const { return blend(rho1, rho2, L, y); }
 double KhProfile::velocity(double y) const { return blend(U1, U2, L, y); }
+double KhProfile::shear(double y) const { return blend_slope(U1, U2, L, y); }
 
 double kh_sheet_growth_incompressible(const KhProfile& prof, double k) {
   return k * std::abs(prof.U1 - prof.U2) * std::sqrt(prof.rho1 * prof.rho2) / (prof.rho1 + prof.rho2);
@@ -116,6 +126,83 @@ KhMode kh_linear_mode(const KhProfile& prof, double k, int steps_per_quarter, Kh
   mode.sigma = secant([&](cplx s) { return shoot(s, prof.L, steps_per_quarter); }, sigma,
                       cplx(0.99 * sigma.real(), sigma.imag()), mode.iterations, mode.residual);
   return mode;
+}
+
+double KhAmplitudeSeries::at(double time) const {
+  if (t.empty()) return 0.0;
+  if (time <= t.front()) return M.front();
+  if (time >= t.back()) return M.back();
+  const std::size_t j = static_cast<std::size_t>(std::upper_bound(t.begin(), t.end(), time) - t.begin());
+  const double w = (time - t[j - 1]) / (t[j] - t[j - 1]);
+  return std::exp((1.0 - w) * std::log(M[j - 1]) + w * std::log(M[j]));
+}
+
+KhAmplitudeSeries kh_linear_amplitude(const KhProfile& prof, double k, double A, double t_end, int N, double dt_factor,
+                                      int every) {
+  if (N < 64) throw std::invalid_argument("kh_linear_amplitude: N must be >= 64");
+  if (!(dt_factor > 0.0 && dt_factor <= 1.0)) throw std::invalid_argument("kh_linear_amplitude: dt_factor in (0, 1]");
+  if (every < 1) throw std::invalid_argument("kh_linear_amplitude: every must be >= 1");
+  const cplx i(0.0, 1.0);
+  const double dy = 1.0 / N;
+  std::vector<double> rho(N), U(N), dU(N), w(N);
+  double wsum = 0.0, c_max = 0.0, U_max = 0.0;
+  for (int j = 0; j < N; ++j) {
+    const double y = j * dy;
+    rho[j] = prof.density(y), U[j] = prof.velocity(y), dU[j] = prof.shear(y);
+    w[j] = std::exp(-k * std::abs(y - (y < 0.5 ? 0.25 : 0.75)));
+    wsum += w[j];
+    c_max = std::max(c_max, std::sqrt(prof.gamma * prof.p0 / rho[j]));
+    U_max = std::max(U_max, std::abs(U[j]));
+  }
+  using Field = std::vector<cplx>;
+  struct State {
+    Field u, v, p;
+  };
+  auto ddy = [&](const Field& f, int j) {  // fourth-order central difference, periodic
+    auto at = [&](int m) { return f[static_cast<std::size_t>(((j + m) % N + N) % N)]; };
+    return (8.0 * (at(1) - at(-1)) - (at(2) - at(-2))) / (12.0 * dy);
+  };
+  auto rates = [&](const State& s, State& r) {
+    for (int j = 0; j < N; ++j) {
+      const cplx adv = -i * k * U[j], dv = ddy(s.v, j), dp = ddy(s.p, j);
+      r.u[j] = adv * s.u[j] - dU[j] * s.v[j] - i * k * s.p[j] / rho[j];
+      r.v[j] = adv * s.v[j] - dp / rho[j];
+      r.p[j] = adv * s.p[j] - prof.gamma * prof.p0 * (i * k * s.u[j] + dv);
+    }
+  };
+  // RK4's stability limit on the imaginary axis, 2.83, over the largest rate: sound at c_max on
+  // the stencil's largest wavenumber (1.372 / dy) plus advection k U_max.
+  const double rate_max = c_max * 1.372 / dy + k * U_max + k * c_max;
+  const int steps = static_cast<int>(std::ceil(t_end / (dt_factor * 2.83 / rate_max)));
+  const double dt = t_end / steps;
+  State s{Field(N, 0.0), Field(N, cplx(0.0, -A)), Field(N, 0.0)}, k1 = s, k2 = s, k3 = s, k4 = s, tmp = s;
+  auto amplitude = [&](const State& st) {
+    cplx sum = 0.0;
+    for (int j = 0; j < N; ++j) sum += st.v[j] * w[j];
+    return std::abs(sum) / wsum;
+  };
+  auto axpy = [&](const State& a, double h, const State& b, State& out) {
+    for (int j = 0; j < N; ++j) out.u[j] = a.u[j] + h * b.u[j], out.v[j] = a.v[j] + h * b.v[j], out.p[j] = a.p[j] + h * b.p[j];
+  };
+  KhAmplitudeSeries out;
+  out.dt = dt;
+  out.t.push_back(0.0), out.M.push_back(amplitude(s));
+  for (int n = 1; n <= steps; ++n) {
+    rates(s, k1);
+    axpy(s, 0.5 * dt, k1, tmp);
+    rates(tmp, k2);
+    axpy(s, 0.5 * dt, k2, tmp);
+    rates(tmp, k3);
+    axpy(s, dt, k3, tmp);
+    rates(tmp, k4);
+    for (int j = 0; j < N; ++j) {
+      s.u[j] += dt / 6.0 * (k1.u[j] + 2.0 * k2.u[j] + 2.0 * k3.u[j] + k4.u[j]);
+      s.v[j] += dt / 6.0 * (k1.v[j] + 2.0 * k2.v[j] + 2.0 * k3.v[j] + k4.v[j]);
+      s.p[j] += dt / 6.0 * (k1.p[j] + 2.0 * k2.p[j] + 2.0 * k3.p[j] + k4.p[j]);
+    }
+    if (n % every == 0 || n == steps) out.t.push_back(n * dt), out.M.push_back(amplitude(s));
+  }
+  return out;
 }
 
 }  // namespace reference

@@ -1,5 +1,6 @@
 #pragma once
 #include <complex>
+#include <vector>
 
 namespace reference {
 
@@ -12,6 +13,7 @@ struct KhProfile {
   double rho1 = 1.0, rho2 = 2.0, U1 = 0.5, U2 = -0.5, L = 0.025, p0 = 2.5, gamma = 5.0 / 3.0;
   double density(double y) const;   // y in [0, 1) (wrapped)
   double velocity(double y) const;  // v_x
+  double shear(double y) const;     // dv_x/dy
 };
 
 // Linear growth of a perturbation ~ exp(i k x + sigma t) of that profile (compressible, inviscid).
@@ -47,5 +49,28 @@ std::complex<double> kh_sheet_sigma(const KhProfile& prof, double k, KhParity pa
 // Incompressible isolated (and, with m = k on both sides, also the periodic box's) sheet:
 // sigma = k |U1 - U2| sqrt(rho1 rho2) / (rho1 + rho2), real part.
 double kh_sheet_growth_incompressible(const KhProfile& prof, double k);
+
+// The linear initial-value problem of the same layer: the Fourier mode exp(i k x) of the
+// perturbation (u, v, p) evolved from v = v0 (uniform in y, McNally et al.'s seed v_y = A sin(k x)
+// is v0 = -i A), u = p = 0, by
+//   du/dt = -i k U u - U' v - i k p / rho,  dv/dt = -i k U v - (dp/dy) / rho,
+//   dp/dt = -i k U p - gamma p0 (i k u + dv/dy),
+// on the periodic y grid of N points (fourth-order central differences) with RK4 in time. It holds
+// every part of the seed (the unstable eigenmode, its decaying partner, the sheared continuum and
+// sound), so M(t) from it is what a converged code shows in the linear phase, transients
+// included, where the eigenvalue is only its late-time slope.
+// McNally et al.'s mode amplitude of this field: M = |int v(y) w(y) dy| / int w(y) dy, w =
+// exp(-k |y - y_int|), y_int = 1/4 below y = 1/2 and 3/4 above (the x sums of their s and c
+// reduce to the mode's complex amplitude).
+struct KhAmplitudeSeries {
+  std::vector<double> t, M;
+  double dt = 0.0;
+  // M at time t, interpolated linearly in ln M between the stored samples.
+  double at(double time) const;
+};
+// Samples every `every` steps up to t_end; throws std::invalid_argument for N < 64 or dt_factor
+// outside (0, 1] (the fraction of the RK4 stability limit used).
+KhAmplitudeSeries kh_linear_amplitude(const KhProfile& prof, double k, double A, double t_end, int N,
+                                      double dt_factor = 0.5, int every = 1);
 
 }  // namespace reference
