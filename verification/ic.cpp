@@ -10,6 +10,7 @@
 #include "verification/cases/evrard_setup.hpp"
 #include "verification/cases/heat_errors.hpp"
 #include "verification/cases/heat_lattice.hpp"
+#include "verification/cases/kh_setup.hpp"
 #include "verification/cases/noh_setup.hpp"
 #include "verification/cases/sedov_setup.hpp"
 #include "verification/cases/sod_errors.hpp"
@@ -164,10 +165,18 @@ InitialState sound_wave_ic(const Params& p, IcLayout layout) {
   });
 }
 
+// The lattice in the periodic unit box [0, 1)^2 with masses rho(y) dx^2, the shear layer's v_x, the
+// seed's v_y and u = p0 / ((gamma - 1) rho) (kh_setup.hpp); rho the profile's (a run replaces it
+// by the summation (27)). The unit box is SWIFT's layout too.
+InitialState kh_ic(const Params& p, IcLayout layout) {
+  return placed(at_start(kh::initial_particles(p), p.real("gamma")), p.real("gamma"), layout, 0.0, 1.0);
+}
+
 const std::map<std::string, InitialConditions>& ics() {
   static const std::map<std::string, InitialConditions> m = {
       {"sod", tube_ic<1>}, {"sod2d", tube_ic<2>}, {"sod3d", tube_ic<3>}, {"sedov", sedov_ic},
-      {"noh", noh_ic},     {"evrard", evrard_ic}, {"heat", heat_ic}, {"sound_wave", sound_wave_ic}};
+      {"noh", noh_ic},     {"evrard", evrard_ic}, {"heat", heat_ic}, {"sound_wave", sound_wave_ic},
+      {"kh", kh_ic}};
   return m;
 }
 

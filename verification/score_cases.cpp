@@ -1,6 +1,7 @@
 // The scorers of `sphv score`: each reads the columns its case needs from a snapshot and calls
 // the same error function as the case's own run (sod_errors.hpp, sedov_errors.hpp,
-// noh_errors.hpp, evrard_errors.hpp, heat_errors.hpp, sound_wave_errors.hpp, gravity_compare.hpp).
+// noh_errors.hpp, evrard_errors.hpp, heat_errors.hpp, sound_wave_errors.hpp, kh_errors.hpp,
+// gravity_compare.hpp).
 #include <cmath>
 #include <stdexcept>
 
@@ -10,6 +11,7 @@
 #include "verification/cases/evrard_errors.hpp"
 #include "verification/cases/gravity_compare.hpp"
 #include "verification/cases/heat_errors.hpp"
+#include "verification/cases/kh_errors.hpp"
 #include "verification/cases/noh_errors.hpp"
 #include "verification/cases/sedov_errors.hpp"
 #include "verification/cases/sod_errors.hpp"
@@ -228,6 +230,50 @@ Result score_gravity(const Params& prm, const Snapshot& s) {
   return r;
 }
 
+// One snapshot of the Kelvin-Helmholtz layer: its time (the file's; a series needs each one) and
+// McNally et al.'s mode amplitude M over the file's box (the unit box where it states none).
+Result score_kh(const Params&, const Snapshot& s) {
+  const std::string who = "kh";
+  if (s.dim != 2) throw InputError(s.path.string() + ": kh needs 2D particles (x, y), the file has " + std::to_string(s.dim) +
+                                   " coordinate(s)");
+  if (!s.time) throw InputError(s.path.string() + ": no time in the snapshot (kh fits a growth rate to the files' times)");
+  positive(s, "rho", who);
+  positive(s, "m", who);
+  sph::Vec<2> lo{0.0, 0.0}, len{1.0, 1.0};
+  std::string from = "the unit box [0, 1)^2: the file states no box";
+  if (const auto box = s.stated.find("box"); box != s.stated.end() && box->second.value.size() >= 4) {
+    lo = {box->second.value[0], box->second.value[2]};
+    len = {box->second.value[1] - box->second.value[0], box->second.value[3] - box->second.value[2]};
+    from = "the file's box (" + box->second.from + ")";
+  }
+  if (!(len[0] > 0.0 && len[1] > 0.0)) throw InputError(s.path.string() + ": kh needs a box of positive size");
+  Result r;
+  r.extra["t"] = *s.time;
+  r.extra["M"] = kh::mode_amplitude(vectors<2>(s, "", who), vectors<2>(s, "v", who), s.at("m", who), s.at("rho", who), lo, len);
+  r.extra["box_from"] = from;
+  return r;
+}
+
+Result score_kh_series(const Params& p, const std::vector<Result>& each) {
+  std::vector<double> t, M;
+  for (const Result& r : each) t.push_back(r.extra["t"].get<double>()), M.push_back(r.extra["M"].get<double>());
+  const double lo = p.real("t_fit_lo"), hi = p.real("t_fit_hi");
+  const kh::GrowthFit f = kh::fit_growth(t, M, lo, hi);
+  if (f.samples < 3)
+    throw InputError("kh: " + std::to_string(f.samples) + " of the " + std::to_string(each.size()) +
+                     " snapshots lie in the fit window [t_fit_lo, t_fit_hi] = [" + shortest(lo) + ", " + shortest(hi) +
+                     "]: give at least 3 (or --set the window)");
+  Result r;
+  kh::growth_result(r, p, f, t, M);
+  r.extra["series_t"] = t;
+  r.extra["series_M"] = M;
+  r.extra["series_note"] = "growth rate " + shortest(f.rate) + " +- " + shortest(f.stderr_rate) + " from " +
+                           std::to_string(f.samples) + " snapshots in [" + shortest(lo) + ", " + shortest(hi) +
+                           "] against the linear eigenmode's " + shortest(r.extra["growth_rate_ref"].get<double>()) +
+                           "; box: " + each.front().extra["box_from"].get<std::string>();
+  return r;
+}
+
 double tube_t_end(const Params& p) { return tube_problem(p).t_end; }
 double real_t_end(const Params& p) { return p.real("t_end"); }
 double tube_gamma(const Params& p) { return tube_problem(p).gamma; }
@@ -245,6 +291,7 @@ const std::map<std::string, Scorer>& scorers() {
       {"evrard", {"t_end", score_evrard, real_t_end, Resolution::count, real_gamma}},
       {"sound_wave", {"t_end", score_sound_wave, real_t_end, Resolution::per_length, real_gamma}},
       {"heat", {"t_end", score_heat, real_t_end}},
+      {"kh", {"", score_kh, {}, Resolution::none, real_gamma, score_kh_series}},
       {"gravity", {"", score_gravity, {}}}};
   return s;
 }

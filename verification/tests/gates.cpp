@@ -161,6 +161,7 @@ TEST_CASE("gate: heat_stiff", "[gate][heat]") { gate("heat_stiff"); }
 TEST_CASE("gate: interpolation", "[gate][interpolation]") { gate("interpolation"); }
 TEST_CASE("gate: kepler", "[gate][gravity]") { gate("kepler"); }
 TEST_CASE("gate: kernel", "[gate][kernel]") { gate("kernel"); }
+TEST_CASE("gate: kh", "[gate][kh]") { gate("kh"); }
 TEST_CASE("gate: laplacian", "[gate][laplacian]") { gate("laplacian"); }
 TEST_CASE("gate: noh", "[gate][extreme][noh]") { gate("noh"); }
 TEST_CASE("gate: sedov", "[gate][extreme][sedov]") { gate("sedov"); }
