@@ -125,7 +125,7 @@ def convergence_caption(case, s, row):
             f"{expected_tex(row)} (dashed, through the finest point; band shaded); {outcome_tex(row)}.")
 
 
-HYDRO = ("sod", "sedov", "noh", "sound_wave")  # the cases that verify the hydrodynamics: the section shows them first
+HYDRO = ("sod", "sedov", "noh", "sound_wave", "kh")  # the cases that verify the hydrodynamics: the section shows them first
 
 
 def run_caption(case, s, name):
@@ -135,7 +135,7 @@ def run_caption(case, s, name):
 
 def hydro_figures(sweeps, made):
     """Per hydrodynamics case present, its default variant's density profile at the finest level
-    (else its first profile) and the convergence of its density error (else its first error with
+    (else its first profile, or kh's mode amplitude against time) and the convergence of its density error (else its first error with
     an order claim), where drawn."""
     pairs = []
     for case in HYDRO:
@@ -144,7 +144,8 @@ def hydro_figures(sweeps, made):
         s = sweeps[case][0]
         mine = [m for m in made if m[0] == case and m[1] is not None and m[1]["variant"] == s["variant"]]
         runs = [m for m in mine if m[3] == "run"]
-        prof = next((m for m in runs if m[2] == "profile_rho"), next((m for m in runs if m[2].startswith("profile")), None))
+        prof = next((m for m in runs if m[2] == "profile_rho"),
+                    next((m for m in runs if m[2].startswith("profile") or m[2] == "mode_amplitude"), None))
         convs = [m for m in mine if m[3] == "convergence"]
         conv = next((m for m in convs if "rho" in m[2]), convs[0] if convs else None)
         pair = [m for m in (prof, conv) if m]

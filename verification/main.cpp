@@ -254,8 +254,10 @@ void add_gravity_command(CLI::App& app) {
 void add_score_command(CLI::App& app, int& status) {
   auto o = std::make_shared<ScoreOptions>();
   auto* cmd = app.add_subcommand("score", "score a snapshot of any SPH code against a case's exact reference");
-  cmd->add_option("case", o->case_name, "case name (sod, sod2d, sod3d, sedov, noh, evrard, heat, gravity)")->required();
-  cmd->add_option("--snapshot", o->snapshot, "particle snapshot: CSV, SWIFT/GADGET HDF5 or H5Part")->required();
+  cmd->add_option("case", o->case_name, "case name (sod, sod2d, sod3d, sedov, noh, evrard, heat, sound_wave, kh, gravity)")->required();
+  cmd->add_option("--snapshot", o->snapshots,
+                  "particle snapshot: CSV, SWIFT/GADGET HDF5 or H5Part (kh: several, a time series; repeatable)")
+      ->required();
   cmd->add_option("--format", o->format, "auto|csv|swift|h5part (default auto)")
       ->check(CLI::IsMember({"auto", "csv", "swift", "h5part"}));
   cmd->add_option("--step", o->step, "H5Part step k of /Step#k (default: the last)")->check(non_negative);
@@ -271,7 +273,7 @@ void add_score_command(CLI::App& app, int& status) {
 void add_ic_command(CLI::App& app) {
   auto o = std::make_shared<IcOptions>();
   auto* cmd = app.add_subcommand("ic", "write a case's initial conditions (for another code to start from)");
-  cmd->add_option("case", o->case_name, "case name (sod, sod2d, sod3d, sedov, noh, evrard, heat)")->required();
+  cmd->add_option("case", o->case_name, "case name (sod, sod2d, sod3d, sedov, noh, evrard, heat, sound_wave, kh)")->required();
   cmd->add_option("--set", o->settings, "case parameters as key=value, separated by commas or blanks (repeatable; n is the level)")->take_all();
   cmd->add_option("--out", o->out, "output file")->required();
   cmd->add_option("--format", o->format, "csv|swift|h5part (default: from the extension, .csv .hdf5/.h5 .h5part)")

@@ -79,7 +79,7 @@ Sweep runner_sweep(const Case& c, const std::vector<long>& levels, const std::ve
     }
     r.wall_time_s = wall;  // the external code's cost
     r.extra["runner_command"] = cmd;
-    if (snap) write_score(r, *snap, dir);
+    if (snap) write_score(r, {*snap}, dir);
     else write_result(r, dir);
     std::printf("n=%ld: %s (%.2f s)\n", levels[k], r.verdict.c_str(), wall);
     std::fflush(stdout);

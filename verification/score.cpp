@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 namespace sphv {
 
@@ -283,64 +284,134 @@ void check_equation_of_state(const Completion& k, const Params& p, const Scorer&
 
 }  // namespace
 
-Result score_snapshot(const Case& c, std::vector<std::string> settings, const Snapshot& s, bool force) {
-  const Scorer& sc = find_scorer(c.name);
-  Completion k{c, s, force, std::move(settings), nlohmann::json::object()};
+namespace {
+
+// The settings completed from the file and parsed, with the record of where each value came from.
+Params complete(Completion& k, const Scorer& sc) {
   complete_time(k, sc);
   complete_dim(k);
-  const int dim = has_param(c, "dim") ? static_cast<int>(std::strtol(setting(k.settings, "dim")->c_str(), nullptr, 10)) : s.dim;
+  const int dim = has_param(k.c, "dim") ? static_cast<int>(std::strtol(setting(k.settings, "dim")->c_str(), nullptr, 10))
+                                        : k.s.dim;
   complete_gamma(k);
   complete_centre(k, dim);
   complete_tube(k);
   complete_n(k, sc);
   for (const std::string& key : sc.constants)
-    for (const ParamSpec& ps : c.params)
+    for (const ParamSpec& ps : k.c.params)
       if (ps.name == key) k.set_or_default(key, ps.default_value, "the case's: no file states it");
-  const Params p = c.parse(k.settings);
+  const Params p = k.c.parse(k.settings);
   check_equation_of_state(k, p, sc);
-  const auto t0 = std::chrono::steady_clock::now();
-  Result r = sc.score(p, s);
-  if (k.values.contains("gamma") && k.values["gamma"]["value"] == "") k.values["gamma"]["value"] = shortest(sc.gamma(p));
-  if (k.values.contains("x0") && k.values["x0"]["value"] == "") k.values["x0"]["value"] = shortest(r.extra["x0"].get<double>());
-  r.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  r.case_name = c.name;
-  r.params = p.to_json();
-  r.n_particles = s.size();
+  return p;
+}
+
+nlohmann::json snapshot_json(const Snapshot& s, const nlohmann::json& values) {
   nlohmann::json cols = nlohmann::json::object();
   for (const auto& [key, v] : s.taken_from)
     if (s.has(key)) cols[key] = v;
-  r.extra["snapshot"] = {{"format", s.format}, {"dim", s.dim}, {"columns", cols},
-                         {"time", s.time ? nlohmann::json(*s.time) : nlohmann::json()}, {"values", k.values}};
+  return {{"format", s.format}, {"dim", s.dim}, {"columns", cols},
+          {"time", s.time ? nlohmann::json(*s.time) : nlohmann::json()}, {"values", values}};
+}
+
+void finish(Result& r, const Case& c, const Params& p, std::size_t particles) {
+  r.case_name = c.name;
+  r.params = p.to_json();
+  r.n_particles = particles;
   nlohmann::json defs = nlohmann::json::object();  // the case's definitions (sphv info CASE)
   for (const auto& [key, v] : r.errors)
     if (c.error_defs.count(key)) defs[key] = c.error_defs.at(key);
   r.extra["error_defs"] = defs;
   name_non_finite(r);  // a snapshot's extreme values (u = 1e300) can overflow an error: a verdict, not a NaN
+}
+
+}  // namespace
+
+Result score_snapshot(const Case& c, std::vector<std::string> settings, const Snapshot& s, bool force) {
+  const Scorer& sc = find_scorer(c.name);
+  if (sc.series) return score_snapshots(c, settings, {s}, force);
+  Completion k{c, s, force, std::move(settings), nlohmann::json::object()};
+  const Params p = complete(k, sc);
+  const auto t0 = std::chrono::steady_clock::now();
+  Result r = sc.score(p, s);
+  if (k.values.contains("gamma") && k.values["gamma"]["value"] == "") k.values["gamma"]["value"] = shortest(sc.gamma(p));
+  if (k.values.contains("x0") && k.values["x0"]["value"] == "") k.values["x0"]["value"] = shortest(r.extra["x0"].get<double>());
+  r.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  r.extra["snapshot"] = snapshot_json(s, k.values);
+  finish(r, c, p, s.size());
   return r;
 }
 
-void write_score(const Result& r, const Snapshot& s, const std::filesystem::path& dir) {
+Result score_snapshots(const Case& c, const std::vector<std::string>& settings, const std::vector<Snapshot>& snaps,
+                       bool force) {
+  const Scorer& sc = find_scorer(c.name);
+  if (snaps.empty()) throw InputError("score " + c.name + ": no snapshot");
+  if (!sc.series) {
+    if (snaps.size() > 1)
+      throw InputError("score " + c.name + ": scores one snapshot, got " + std::to_string(snaps.size()) +
+                       " (only a time-series case, e.g. kh, takes several)");
+    return score_snapshot(c, settings, snaps.front(), force);
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  std::vector<Result> each;
+  std::vector<std::string> first_settings;
+  nlohmann::json listed = nlohmann::json::array();
+  std::size_t particles = 0;
+  std::optional<Params> params;
+  for (const Snapshot& s : snaps) {
+    Completion k{c, s, force, settings, nlohmann::json::object()};
+    const Params p = complete(k, sc);
+    if (!params) params = p, first_settings = k.settings;
+    else if (k.settings != first_settings)
+      throw InputError(s.path.string() + ": its values (" + p.to_json().dump() + ") differ from " +
+                       snaps.front().path.string() + "'s (" + params->to_json().dump() +
+                       "): one series is one run (--set the values to score them alike)");
+    each.push_back(sc.score(p, s));
+    if (k.values.contains("gamma") && k.values["gamma"]["value"] == "") k.values["gamma"]["value"] = shortest(sc.gamma(p));
+    listed.push_back(snapshot_json(s, k.values));
+    listed.back()["path"] = s.path.string();
+    particles = std::max(particles, s.size());
+  }
+  Result r = sc.series(*params, each);
+  r.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  r.extra["snapshots"] = listed;
+  r.extra["snapshot"] = listed.front();
+  finish(r, c, *params, particles);
+  return r;
+}
+
+void write_score(const Result& r, const std::vector<Snapshot>& s, const std::filesystem::path& dir) {
   nlohmann::json j = to_json(r);
-  j["provenance"]["snapshot"] = file_provenance(s.path);
+  if (s.size() == 1) {
+    j["provenance"]["snapshot"] = file_provenance(s.front().path);
+  } else {
+    j["provenance"]["snapshots"] = nlohmann::json::array();
+    for (const Snapshot& one : s) j["provenance"]["snapshots"].push_back(file_provenance(one.path));
+  }
   write_atomically(dir / "result.json", j.dump(1) + "\n");
 }
 
 int score_command(const ScoreOptions& o) {
   const Case& c = find_case(o.case_name);
-  find_scorer(c.name);
-  const Snapshot s = read_snapshot(o.snapshot, o.format, o.step >= 0 ? std::optional<long>(o.step) : std::nullopt);
-  const Result r = score_snapshot(c, o.settings, s, o.force);
+  const Scorer& sc = find_scorer(c.name);
+  if (o.snapshots.size() > 1 && !sc.series)
+    throw InputError("score " + c.name + ": scores one snapshot, got " + std::to_string(o.snapshots.size()) +
+                     " (only a time-series case, e.g. kh, takes several)");
+  std::vector<Snapshot> snaps;
+  for (const auto& path : o.snapshots)
+    snaps.push_back(read_snapshot(path, o.format, o.step >= 0 ? std::optional<long>(o.step) : std::nullopt));
+  const Result r = score_snapshots(c, o.settings, snaps, o.force);
   const auto dir = o.out.empty() ? std::filesystem::path("runs") / (c.name + "-score") : o.out;
-  write_score(r, s, dir);
-  std::printf("%s: %zu particles (%s, %dD, t = %s): %s\n", o.snapshot.c_str(), s.size(), s.format.c_str(), s.dim,
-              s.time ? number(*s.time).c_str() : "-", s.describe().c_str());
+  write_score(r, snaps, dir);
+  for (const Snapshot& s : snaps)
+    std::printf("%s: %zu particles (%s, %dD, t = %s): %s\n", s.path.c_str(), s.size(), s.format.c_str(), s.dim,
+                s.time ? number(*s.time).c_str() : "-", s.describe().c_str());
   std::string values;
   for (const auto& [key, v] : r.extra["snapshot"]["values"].items())
     values += (values.empty() ? "" : "; ") + key + "=" + v["value"].get<std::string>() + " (" + v["from"].get<std::string>() + ")";
-  std::printf("values: %s\n", values.c_str());
+  std::printf("values%s: %s\n", snaps.size() > 1 ? " (every file alike)" : "", values.c_str());
   if (r.extra.contains("particles_scored"))
-    std::printf("scored %zu of %zu particles (%s)\n", r.extra["particles_scored"].get<std::size_t>(), s.size(),
+    std::printf("scored %zu of %zu particles (%s)\n", r.extra["particles_scored"].get<std::size_t>(), snaps.front().size(),
                 r.extra["window"].get<std::string>().c_str());
+  if (r.extra.contains("series_note")) std::printf("%s\n", r.extra["series_note"].get<std::string>().c_str());
   std::string line = c.name;
   for (const auto& [k, v] : r.errors) {
     char buf[96];

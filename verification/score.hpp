@@ -23,13 +23,20 @@ const Scorer& find_scorer(const std::string& case_name);
 // Result as `sphv run`'s, with extra.snapshot (format, columns, and each value with where it
 // came from: the file, --set or a default) and the scoring time.
 Result score_snapshot(const Case& c, std::vector<std::string> settings, const Snapshot& s, bool force = false);
+// A series scorer's snapshots, each completed from its own file as score_snapshot does (they must
+// agree on every value taken from them); extra.snapshots lists each file's time and values. A
+// case without a series scorer is refused for more than one snapshot.
+Result score_snapshots(const Case& c, const std::vector<std::string>& settings, const std::vector<Snapshot>& s,
+                       bool force = false);
 
-// result.json of a scored snapshot: the run's keys, provenance.snapshot = path, size, SHA-256.
-void write_score(const Result& r, const Snapshot& s, const std::filesystem::path& dir);
+// result.json of scored snapshots: the run's keys, provenance.snapshot = path, size, SHA-256 (of
+// each file, a list, provenance.snapshots, for several).
+void write_score(const Result& r, const std::vector<Snapshot>& s, const std::filesystem::path& dir);
 
 struct ScoreOptions {
   std::string case_name, format = "auto";
-  std::filesystem::path snapshot, out;
+  std::vector<std::filesystem::path> snapshots;  // one, or a time series (kh)
+  std::filesystem::path out;
   std::vector<std::string> settings;
   long step = -1;  // H5Part step (-1: the last)
   bool force = false;  // settings may contradict the file

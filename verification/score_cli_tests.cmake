@@ -72,6 +72,20 @@ sphv_refuses(gresho_kernel_rate53 run gresho --set kernel=wendland_c4 hmode=rate
 sphv_refuses(gresho_bad_p0 run gresho --set p0=0)
 sphv_refuses(gresho_coarse run gresho --set n=4)
 sphv_refuses(sound_wave_kernel_rate53 run sound_wave --set kernel=quintic_spline hmode=rate53)
+# kh: the IC in SWIFT's layout holds n^2 particles; bad set-ups are refused (exit 2), and so are
+# several snapshots for a case scored on one, and a kh series with too few in the fit window.
+add_test(NAME ic_kh_swift COMMAND bash -c
+  "$<TARGET_FILE:sphv> ic kh --set n=16 --out kh_ic.hdf5 && $<TARGET_FILE:sphv> convert --input kh_ic.hdf5 --out kh_ic.csv --format csv && test $(grep -vc '^#' kh_ic.csv) -eq 257 && echo PASS"
+  WORKING_DIRECTORY ${_sdir})
+set_tests_properties(ic_kh_swift PROPERTIES PASS_REGULAR_EXPRESSION "kh n=16: initial conditions written(.|\n)*PASS")
+sphv_refuses(kh_n_not_multiple_of_4 run kh --set n=30)
+sphv_refuses(kh_nonlinear_seed run kh --set A=0.1)
+sphv_refuses(kh_empty_window run kh --set t_fit_lo=0.5 t_fit_hi=0.4)
+sphv_refuses(kh_ic_no_shear ic kh --set U=0 --out ${_sdir}/kh_refused.csv)
+add_test(NAME kh_score_refusals_exit_2 COMMAND bash -c
+  "$<TARGET_FILE:sphv> ic kh --set n=16 --out khs.csv || exit 9; $<TARGET_FILE:sphv> score sound_wave --snapshot khs.csv khs.csv --out khs_sw; a=$?; $<TARGET_FILE:sphv> score kh --snapshot khs.csv khs.csv --out khs_kh; b=$?; echo $a $b; test $a -eq 2 && test $b -eq 2 && echo PASS"
+  WORKING_DIRECTORY ${_sdir})
+set_tests_properties(kh_score_refusals_exit_2 PROPERTIES PASS_REGULAR_EXPRESSION "scores one snapshot, got 2(.|\n)*0 of the 2 snapshots lie in the fit window(.|\n)*PASS")
 # The format follows the file's extension (.hdf5/.h5 SWIFT, .csv CSV) or is refused when they
 # contradict; SWIFT's tube has its interfaces where SWIFT's example puts them.
 add_test(NAME ic_format_from_extension COMMAND bash -c

@@ -24,6 +24,9 @@ struct Scorer {
   Resolution n = Resolution::none;
   std::function<double(const Params&)> gamma;     // the adiabatic index in use (empty: the case has none)
   std::vector<std::string> constants = {};        // parameters no file states (e.g. K, G): from --set or default
+  // A case scored on a time series (kh's growth rate): score measures one snapshot, series joins
+  // the snapshots' results, in the order given, into the case's errors. Empty: one snapshot.
+  std::function<Result(const Params&, const std::vector<Result>&)> series = {};
 };
 
 }  // namespace sphv

@@ -96,6 +96,30 @@ TEST_CASE("score: sedov 2D round trip reproduces shock_radius and L1_rho", "[sco
   require_round_trip("sedov", {"n=16"}, {"csv", "h5part"});
 }
 
+TEST_CASE("score: kh fits its growth to a time series of snapshots, M as the runs measured it", "[score][kh]") {
+  const Case& c = find_case("kh");
+  std::vector<Snapshot> snaps;
+  std::vector<double> t, M;
+  for (const char* T : {"0.7", "0.9", "1.1"}) {
+    const Result run = run_case(c, c.parse({"n=16", "t_fit_lo=0", std::string("t_fit_hi=") + T, std::string("t_end=") + T}));
+    REQUIRE(run.verdict == "stable");
+    t.push_back(run.extra["t_reached"].get<double>());
+    M.push_back(run.extra["M_last"].get<double>());
+    const auto file = scratch(std::string("kh_") + T + ".csv");
+    write_snapshot(from_run(run, t.back()), file, "csv");
+    snaps.push_back(read_snapshot(file));
+  }
+  const Result r = score_snapshots(c, {"n=16"}, snaps);
+  REQUIRE(r.errors.count("growth"));
+  const auto scored = r.extra["series_M"].get<std::vector<double>>();
+  REQUIRE(scored.size() == 3);
+  for (std::size_t k = 0; k < 3; ++k) CHECK(std::abs(scored[k] / M[k] - 1.0) < 1e-12);  // CSV keeps 17 digits
+  const double rate = (std::log(M[2]) - std::log(M[0])) / (t[2] - t[0]);  // three equally spaced points
+  CHECK(std::abs(r.extra["growth_rate"].get<double>() / rate - 1.0) < 1e-9);
+  // One snapshot of a series case is refused: no growth from a single time.
+  CHECK_THROWS_AS(score_snapshot(c, {}, snaps.front()), InputError);
+}
+
 TEST_CASE("score: noh 1D round trip", "[score]") { require_round_trip("noh", {"n=100"}, {"csv", "swift"}); }
 
 TEST_CASE("score: sound_wave 2D round trip", "[score][sound]") {
