@@ -15,6 +15,7 @@
 #include "verification/cases/sod_errors.hpp"
 #include "verification/cases/sod_simulate.hpp"
 #include "verification/cases/sound_wave_setup.hpp"
+#include "verification/cases/square_setup.hpp"
 #include "verification/snapshot/swift_ic.hpp"
 
 namespace sphv {
@@ -164,10 +165,22 @@ InitialState sound_wave_ic(const Params& p, IcLayout layout) {
   });
 }
 
+// The square's particles in the periodic unit box [0, 1)^d (square_setup.hpp: equal masses on
+// two lattices, or one lattice), rho and u exact; the unit box is SWIFT's layout too.
+InitialState square_ic(const Params& p, IcLayout layout) {
+  auto one = [&](auto dim) {
+    constexpr int D = decltype(dim)::value;
+    return placed(at_start(square::initial_particles<D>(p), p.real("gamma")), p.real("gamma"), layout, 0.0, 1.0);
+  };
+  if (p.integer("dim") == 2) return one(std::integral_constant<int, 2>{});
+  return one(std::integral_constant<int, 3>{});
+}
+
 const std::map<std::string, InitialConditions>& ics() {
   static const std::map<std::string, InitialConditions> m = {
       {"sod", tube_ic<1>}, {"sod2d", tube_ic<2>}, {"sod3d", tube_ic<3>}, {"sedov", sedov_ic},
-      {"noh", noh_ic},     {"evrard", evrard_ic}, {"heat", heat_ic}, {"sound_wave", sound_wave_ic}};
+      {"noh", noh_ic},     {"evrard", evrard_ic}, {"heat", heat_ic}, {"sound_wave", sound_wave_ic},
+      {"square", square_ic}};
   return m;
 }
 

@@ -1,6 +1,7 @@
 // The scorers of `sphv score`: each reads the columns its case needs from a snapshot and calls
 // the same error function as the case's own run (sod_errors.hpp, sedov_errors.hpp,
-// noh_errors.hpp, evrard_errors.hpp, heat_errors.hpp, sound_wave_errors.hpp, gravity_compare.hpp).
+// noh_errors.hpp, evrard_errors.hpp, heat_errors.hpp, sound_wave_errors.hpp, square_errors.hpp,
+// gravity_compare.hpp).
 #include <cmath>
 #include <stdexcept>
 
@@ -14,6 +15,8 @@
 #include "verification/cases/sedov_errors.hpp"
 #include "verification/cases/sod_errors.hpp"
 #include "verification/cases/sound_wave_errors.hpp"
+#include "verification/cases/square_errors.hpp"
+#include "verification/cases/square_setup.hpp"
 #include "verification/gravity_input.hpp"
 #include "verification/score.hpp"
 
@@ -162,6 +165,37 @@ Result score_sound_wave(const Params& prm, const Snapshot& s) {
   return r;
 }
 
+// The square in the periodic unit box [0, 1)^d of sphv's and SWIFT's layout: a file that states
+// another box is refused (the reference's square of side 1/2 and its speeds are in units of the
+// box's side). The phases are read from u (square_errors.hpp), or from p / rho where u is absent.
+Result score_square(const Params& prm, const Snapshot& s) {
+  const std::string who = "square";
+  positive(s, "rho", who);
+  positive(s, "m", who);
+  if (const auto box = s.stated.find("box"); box != s.stated.end())
+    for (double side : box->second.value)
+      if (side != 0.0 && std::abs(side - 1.0) > 1e-12)
+        throw InputError(s.path.string() + ": square scores the periodic unit box [0, 1)^d, the file's box (" +
+                         box->second.from + ") has a side " + std::to_string(side) + " (rescale the snapshot)");
+  if (s.dim != prm.integer("dim"))
+    throw InputError(s.path.string() + ": the file has " + std::to_string(s.dim) + " coordinate(s), dim = " +
+                     prm.text("dim") + " (set dim=" + std::to_string(s.dim) + ")");
+  const reference::IsobaricSquare sq = square::problem(prm);
+  Result r;
+  const auto u = internal_energy(s, prm.real("gamma"), who);
+  auto one = [&](auto dim) {
+    constexpr int D = decltype(dim)::value;
+    auto x = vectors<D>(s, "", who);
+    for (auto& xi : x)
+      for (int d = 0; d < D; ++d) xi[d] -= std::floor(xi[d]);  // into [0, 1)
+    square::measure<D>(r, x, vectors<D>(s, "v", who), s.at("m", who), s.at("rho", who), u, prm.real("t_end"), sq,
+                       prm.real("gamma"), prm.integer("n"));
+  };
+  if (s.dim == 2) one(std::integral_constant<int, 2>{});
+  else one(std::integral_constant<int, 3>{});
+  return r;
+}
+
 Result score_evrard(const Params& prm, const Snapshot& s) {
   const std::string who = "evrard";
   positive(s, "rho", who);
@@ -244,6 +278,7 @@ const std::map<std::string, Scorer>& scorers() {
       {"noh", {"t_end", score_noh, real_t_end, Resolution::per_length, real_gamma}},
       {"evrard", {"t_end", score_evrard, real_t_end, Resolution::count, real_gamma}},
       {"sound_wave", {"t_end", score_sound_wave, real_t_end, Resolution::per_length, real_gamma}},
+      {"square", {"t_end", score_square, real_t_end, Resolution::none, real_gamma}},
       {"heat", {"t_end", score_heat, real_t_end}},
       {"gravity", {"", score_gravity, {}}}};
   return s;

@@ -168,5 +168,6 @@ TEST_CASE("gate: sod", "[gate][sod]") { gate("sod"); }
 TEST_CASE("gate: sod2d", "[gate][sod2d]") { gate("sod2d"); }
 TEST_CASE("gate: sod3d", "[gate][sod3d]") { gate("sod3d"); }
 TEST_CASE("gate: sound_wave", "[gate][sound]") { gate("sound_wave"); }
+TEST_CASE("gate: square", "[gate][square]") { gate("square"); }
 TEST_CASE("gate: stability_map_heat", "[gate][extreme]") { gate("stability_map_heat"); }
 TEST_CASE("gate: stability_map_hydro", "[gate][extreme]") { gate("stability_map_hydro"); }
