@@ -154,6 +154,10 @@ def kernels(case, label, members, errors, stem):
         axes[0][j].set_xlabel("n")
         axes[1][j].set_xlabel("wall time of the run [s]")
         axes[0][j].xaxis.set_minor_formatter(matplotlib.ticker.NullFormatter())
+        # Wall times in plain numbers at 1, 2, 5 per decade: narrow panels have no room for more.
+        axes[1][j].xaxis.set_major_locator(matplotlib.ticker.LogLocator(subs=(1.0, 2.0, 5.0)))
+        axes[1][j].xaxis.set_major_formatter(matplotlib.ticker.FuncFormatter(lambda v, _: f"{v:g}"))
+        axes[1][j].xaxis.set_minor_formatter(matplotlib.ticker.NullFormatter())
         for ax in axes[:, j]:
             ax.grid(True, which="both", alpha=0.3)
     if not drawn:
