@@ -21,6 +21,7 @@ from urllib.parse import quote
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import report_figures as figs  # noqa: E402
+import report_kernels  # noqa: E402
 from report_data import (OUTCOMES, claim_notes, counts, errors_of, expected_text, file_of, fmt, is_dirty, load, num, order_text,  # noqa: E402
                          provenances, read_json, row_note, row_reason, slug, sweep_wide_failures, threads_text)
 
@@ -32,7 +33,7 @@ th{background:#f2f2f2;text-align:left}td.num{text-align:right;white-space:nowrap
 p.verdict{font-size:22px;font-weight:bold;margin:6px 0}p.verdict.pass{color:#060}p.verdict.fail{color:#b00}
 ul.claims{font-size:14px}ul.claims li{margin:3px 0}
 .counts span{display:inline-block;margin-right:18px;font-size:18px}.why{font-size:12px;color:#333;min-width:200px;max-width:400px}
-div.figs{display:flex;flex-wrap:wrap;gap:8px}figure{margin:0;width:600px}figcaption{font-size:12px}
+div.figs{display:flex;flex-wrap:wrap;gap:8px}figure{margin:0;width:600px}div.wide figure{width:1200px}figcaption{font-size:12px}
 img{max-width:100%;border:1px solid #ddd}.prov{font-size:12px;color:#333}p.claim{font-size:15px;background:#f6f8fa;padding:8px}"""
 CLS = {"verified": "verified", "known failure": "known", "no order claimed": "noclaim", "fail": "fail"}
 
@@ -201,6 +202,15 @@ def cases_table(sweeps, missing):
     return "".join(t) + "</table>"
 
 
+def kernel_links(sweeps):
+    """A line linking each case page's kernel comparison, where a case has one."""
+    cases = [case for case, ss in sorted(sweeps.items()) if report_kernels.groups(ss)]
+    if not cases:
+        return ""
+    return ("<p id='kernel-comparisons'>Kernel comparisons (error at fixed n and at fixed cost, order and wall time per kernel): "
+            + ", ".join(f"<a href='{e(case_page_name(c))}#kernels'>{e(c)}</a>" for c in cases) + ".</p>")
+
+
 def index_page(name, sweeps, missing, tier, mutants_link):
     c = counts(sweeps)
     n_sweeps = sum(len(ss) for ss in sweeps.values()) + len(missing)
@@ -209,7 +219,7 @@ def index_page(name, sweeps, missing, tier, mutants_link):
     verdict = (f"<p class='verdict fail'>FAIL: {failing} of {n_sweeps} case variants fail (<a href='#failing'>the failing rows</a>)</p>"
                if failing else f"<p class='verdict pass'>PASS: all {n_sweeps} case variants pass</p>")
     body = [f"<h1>sphv verification report: {e(name)}</h1>", verdict, counts_html(c, "#failing"),
-            failing_rows(sweeps, missing), cases_table(sweeps, missing),
+            failing_rows(sweeps, missing), cases_table(sweeps, missing), kernel_links(sweeps),
             f"<p>{len(sweeps)} cases, {n_sweeps} case variants, summed run time {wall:.1f} s. Each count is of errors of a case "
             "variant at its finest level. <b class='verified'>verified</b>: the observed order lies in the expected band (widened "
             "by two standard errors of the fit), the fit's standard error is at most the band, and the error is under its bound; <b class='known'>known failure</b>: the error "
@@ -265,9 +275,49 @@ def figure_html(out, stem, caption):
             f"<figcaption>{e(caption)} (<a href='{e(pdf)}'>PDF</a>)</figcaption></figure>")
 
 
+def kernel_section(case, ss, out, figdir, made):
+    """Per group of variants differing only in the kernel (report_kernels.py): its figure (error
+    against n and against wall time, per kernel), then its table; "" when the case has none."""
+    parts = []
+    for label, members in report_kernels.groups(ss):
+        errs = report_kernels.errors(members)
+        stem = figs.kernels(case, label, members, errs, figdir / f"kernels_{slug(label)}")
+        if stem:
+            made.append((case, None, label, "kernels", stem))
+            parts.append("<div class='figs wide'>" + figure_html(out, stem, kernel_caption(case, label, members)) + "</div>")
+        t = ["<table><tr><th>error</th><th>kernel</th><th>levels n</th><th>error at fixed n</th><th>wall s at fixed n</th>"
+             "<th>error at fixed cost</th><th>observed ± s.e.</th><th>expected ± band</th><th>outcome</th></tr>"]
+        for err in errs:
+            n_fixed, t_fixed, rows = report_kernels.comparison(members, err)
+            best = {k: min((r[k] for r in rows if num(r[k])), default=None) for k in ("at_n", "at_cost")}
+            cell = lambda r, k: (f"<td class='num'>{'<b>' if r[k] == best[k] and num(r[k]) else ''}{fmt(r[k], '.3e')}"  # noqa: E731
+                                 f"{'</b>' if r[k] == best[k] and num(r[k]) else ''}</td>")
+            for j, r in enumerate(rows):
+                head = (f"<td rowspan={len(rows)}>{e(err)}<br><span class='prov'>fixed n = {fmt(n_fixed, 'g')}, "
+                        f"fixed cost {fmt(t_fixed, '.3g')} s</span></td>") if j == 0 else ""
+                t.append(f"<tr{' class=first' if j == 0 else ''}>{head}<td class='nw'>{e(r['kernel'])}</td>"
+                         f"<td>{e(', '.join(map(str, r['levels'])))}</td>{cell(r, 'at_n')}<td class='num'>{fmt(r['wall_at_n'], '.3g')}</td>"
+                         f"{cell(r, 'at_cost')}{order_cell(r)}<td class='num'>{e(expected_text(r))}</td>{outcome_cell(r['outcome'])}</tr>")
+        parts.append("".join(t) + "</table>")
+    if not parts:
+        return ""
+    return ("<h2 id='kernels'>Kernel comparison</h2><p>Variants that differ only in the kernel (parameter <code>kernel</code>). "
+            "Per error: the error at a fixed resolution (the finest n every kernel ran) with its wall time; at a fixed cost "
+            "(each kernel's error interpolated, linearly in log error against log wall time, between the two runs that "
+            "bracket the largest wall time every kernel's sweep reached); the observed order of the sweep and its outcome. "
+            "The lowest error at fixed n and at fixed cost in bold. Wall times are single measurements of each run "
+            f"(on {e(threads_text(r for s in ss for r in s['runs']))}) and carry the machine's noise.</p>" + "".join(parts))
+
+
+def kernel_caption(case, label, members):
+    return (f"{case} [{label}]: every error of the kernels {', '.join(k for k, _ in members)} against n (top) and against "
+            "the wall time of each run (bottom); dotted: the fixed resolution and the fixed cost of the table")
+
+
 def case_page(case, ss, results, out, made):
     figdir = out / "fig" / slug(case)
     body = ["<p><a href='index.html'>&larr; summary of all cases</a></p>", f"<h1>{e(case)}</h1>", claim_sentence(case, ss)]
+    body.append(kernel_section(case, ss, out, figdir, made))
     body.append("<h2>Figures</h2><p>Convergence figures only for errors with an order claim; errors without one are "
                 "tabulated per level. Each figure links its vector PDF.</p>")
     claimed = [n for n in dict.fromkeys(r["error"] for s in ss for r in s["rows"] if num(r.get("expected")))]

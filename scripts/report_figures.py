@@ -12,11 +12,11 @@ from report_data import claim, file_of, num, series, wrap  # noqa: E402
 plt.rcParams.update({"pdf.fonttype": 42, "font.size": 8, "axes.titlesize": 9, "legend.fontsize": 7})
 
 
-def save(fig, stem):
+def save(fig, stem, **margins):
     stem.parent.mkdir(parents=True, exist_ok=True)
     # Fixed margins with room for labels of up to three lines (wrap()): "tight" bounding boxes or
     # constrained layout cost a further draw of every figure, nearly doubling the report's time.
-    fig.subplots_adjust(left=0.16, right=0.97, bottom=0.15, top=0.89)
+    fig.subplots_adjust(**({"left": 0.16, "right": 0.97, "bottom": 0.15, "top": 0.89} | margins))
     for ax in fig.axes:  # a log axis over less than a decade labels some minor ticks too (one major tick says little;
         for axis in (ax.xaxis, ax.yaxis):  # over more, minor labels run into each other)
             if axis.get_scale() == "log" and isinstance(axis.get_minor_formatter(), matplotlib.ticker.LogFormatter):
@@ -120,3 +120,51 @@ def run_figure(f, suffix, stem):
         ax.legend()
     ax.grid(True, alpha=0.3)
     return save(fig, stem)
+
+
+def kernels(case, label, members, errors, stem):
+    """The kernel comparison of one group (report_kernels.py): per error (a column), the error
+    against n (top, the observed order's slope) and against the wall time of each run (bottom,
+    the fixed cost marked by a dotted line), one line per kernel."""
+    import report_kernels as rk  # noqa: E402 (the figures module stays free of the comparison's logic)
+    if not errors:
+        return None
+    cols = len(errors)
+    width = max(5.6, 3.0 * cols + 0.8)
+    fig, axes = plt.subplots(2, cols, figsize=(width, 5.6), squeeze=False)
+    drawn = 0
+    for j, err in enumerate(errors):
+        n_fixed, t_fixed, _ = rk.comparison(members, err)
+        for k, (kernel, s) in enumerate(members):
+            pts = rk.points(s, err)
+            if not pts:
+                continue
+            n, t, y = zip(*pts)
+            style = dict(color=f"C{k % 10}", marker="os^vDP"[k % 6], ms=4, lw=0.8, label=kernel)
+            axes[0][j].loglog(n, y, **style)
+            axes[1][j].loglog(t, y, **style)
+            drawn += 1
+        if n_fixed is not None:
+            axes[0][j].axvline(n_fixed, color="0.5", ls=":", lw=0.8)
+        if t_fixed is not None:
+            axes[1][j].axvline(t_fixed, color="0.5", ls=":", lw=0.8)
+        levels = sorted({p[0] for _, s in members for p in rk.points(s, err)})
+        axes[0][j].set_xticks(levels, [f"{v:g}" for v in levels])  # the levels themselves
+        axes[0][j].set_title(err)
+        axes[0][j].set_xlabel("n")
+        axes[1][j].set_xlabel("wall time of the run [s]")
+        axes[0][j].xaxis.set_minor_formatter(matplotlib.ticker.NullFormatter())
+        # Wall times in plain numbers at 1, 2, 5 per decade: narrow panels have no room for more.
+        axes[1][j].xaxis.set_major_locator(matplotlib.ticker.LogLocator(subs=(1.0, 2.0, 5.0)))
+        axes[1][j].xaxis.set_major_formatter(matplotlib.ticker.FuncFormatter(lambda v, _: f"{v:g}"))
+        axes[1][j].xaxis.set_minor_formatter(matplotlib.ticker.NullFormatter())
+        for ax in axes[:, j]:
+            ax.grid(True, which="both", alpha=0.3)
+    if not drawn:
+        plt.close(fig)
+        return None
+    axes[0][0].set_ylabel("error against n")
+    axes[1][0].set_ylabel("error against cost")
+    axes[0][0].legend(fontsize=6)
+    fig.suptitle(wrap(f"{case} [{label}]: kernels compared (dotted: the fixed resolution and the fixed cost)", int(13 * width)), fontsize=9)
+    return save(fig, stem, left=0.85 / width, right=0.98, bottom=0.09, top=0.88, wspace=0.35, hspace=0.38)

@@ -4,13 +4,15 @@ reader relies on: no warning on stderr, every href and src resolves inside the f
 counts at the top match the rows of the sweep.json files, a convergence figure (PNG and PDF)
 for every claimed error of every variant and none for errors without an order claim, a
 run-time figure per claimed error, every figure entry its own file, the bundle's provenance
-(each point's own threads, dates and wall time), and with --mutants the kill matrix page. With --dirty it
+(each point's own threads, dates and wall time), the kernel comparison of a case with variants
+differing only in `kernel` (its fixed-cost errors recomputed), and with --mutants the kill matrix page. With --dirty it
 also checks that a bundle of results whose provenance records a dirty tree is refused
 (--allow-dirty is exercised by bundle_test.sh).
 
 usage: report_test.py RESULTS_DIR WORK_DIR [--mutants FILE] [--dirty]"""
 import html
 import json
+import math
 import re
 import shutil
 import subprocess
@@ -79,6 +81,55 @@ def distinct_figures(out, stdout):
     expect(m and int(m.group(1)) == len(entries), f"report.py says {m and m.group(1)} figures, the pages show {len(entries)}")
 
 
+def kernel_groups(sweeps):
+    """{(case, shared settings): {kernel: sweep}} of the sweeps that differ only in the setting
+    `kernel` (the default variant's kernel from its runs' params), read here without
+    report_kernels.py, two kernels or more."""
+    found = {}
+    for s in sweeps:
+        st = dict(x.split("=", 1) for x in s["settings"] if "=" in x)
+        k = st.pop("kernel", None) or s["runs"][0].get("params", {}).get("kernel")
+        if k:
+            found.setdefault((s["case"], ",".join(f"{a}={b}" for a, b in sorted(st.items())) or "default"), {})[k] = s
+    return {g: m for g, m in found.items() if len(m) >= 2}
+
+
+def kernel_checks(out, sweeps):
+    """Each case with kernel variants shows one kernel comparison per group (figure, then a table
+    with a row per kernel and error); the error at the fixed cost is each kernel's, interpolated
+    log-log on its error-against-wall-time curve at the cheapest curve's end, recomputed here;
+    a case without kernel variants shows none."""
+    groups = kernel_groups(sweeps)
+    with_kernels = {case for case, _ in groups}
+    expect(with_kernels or not any("kernel=" in x for s in sweeps for x in s["settings"]), "kernel variants found no group")
+    index = (out / "index.html").read_text()
+    for case in {s["case"] for s in sweeps}:
+        text = (out / f"case-{slug(case)}.html").read_text()
+        expect(("id='kernels'" in text) == (case in with_kernels), f"{case}: kernel comparison shown {'id=' in text}, expected {case in with_kernels}")
+        expect((f"case-{slug(case)}.html#kernels" in index) == (case in with_kernels), f"index: kernel link of {case}")
+    for (case, label), members in groups.items():
+        text = (out / f"case-{slug(case)}.html").read_text()
+        section = text[text.find("id='kernels'"):text.find("<h2>Figures</h2>")]
+        stem = out / "fig" / slug(case) / f"kernels_{slug(label)}"
+        expect(file_of(stem, "png").is_file() and file_of(stem, "pdf").is_file(), f"{case} {label}: no kernel figure")
+        expect(section.find("<figure>") < section.find("<table>"), f"{case}: the kernel table before its figure")
+        for err in [r["error"] for r in next(iter(members.values()))["rows"]]:
+            curves = {}
+            for k, s in members.items():
+                curves[k] = sorted((r["wall_time_s"], r["errors"][err], n) for n, r in zip(s["levels"], s["runs"]) if err in r["errors"])
+            cost = min(c[-1][0] for c in curves.values())
+            for k, c in curves.items():
+                want = None
+                for (t0, y0, _), (t1, y1, _) in zip(c, c[1:]):
+                    if t0 <= cost <= t1:
+                        want = math.exp(math.log(y0) + (math.log(y1) - math.log(y0)) * math.log(cost / t0) / math.log(t1 / t0))
+                        break
+                row = re.search(rf"<td class='nw'>{re.escape(k)}</td>(.*?)</tr>", section)
+                cells = re.findall(r"<td class='num'>(?:<b>)?([^<]*)", row.group(1)) if row else []
+                expect(want is not None and len(cells) >= 3 and abs(float(cells[2]) / want - 1) < 1e-3,
+                       f"{case} {label} {err} {k}: error at fixed cost {cells[2:3]}, recomputed {want}")
+
+
 def bundle_checks(results, work, sweeps):
     """The bundle's provenance takes each point's own threads, dates and wall time (result.json),
     not the process that wrote sweep.json; each figure of the supplement is its own file."""
@@ -107,6 +158,9 @@ def bundle_checks(results, work, sweeps):
     expect(coloured == known, f"the supplement's tables colour {coloured} known failures of {known}")
     m = re.search(r"; (\d+) figures\)", res.stdout)
     expect(m and int(m.group(1)) == len(included), f"supplement includes {len(included)} figures of {m and m.group(1)}")
+    for case, label in kernel_groups(sweeps):
+        expect(f"tab:supp-kernels-{slug(case)}-{slug(label)}" in supp and f"{slug(case)}_kernels_{slug(label)}".replace(".", "p") in supp,
+               f"the supplement lacks the kernel table or figure of {case} {label}")
 
 
 def main():
@@ -164,6 +218,7 @@ def main():
     for png in out.glob("fig/**/*.png"):
         expect(png.with_name(png.name[:-4] + ".pdf").is_file(), f"{png.name} has no PDF")
     distinct_figures(out, res.stdout)
+    kernel_checks(out, sweeps)
     if mutants:
         km = json.loads(Path(mutants).read_text())
         killed = sum(bool(m["killed"]) for m in km["mutants"])

@@ -304,3 +304,20 @@ sphv_refuses(polytrope_centre_in_run run polytrope --set centre=1,0,0)
 sphv_refuses(polytrope_ic_negative_K ic polytrope --set K=-1 --out ${_sdir}/poly_bad.csv)
 file(WRITE ${_sdir}/polytrope_1d.csv "# time = 1\nx,vx,m,rho,u\n0.1,0,1,1,1\n")
 score_refuses(polytrope_not_3d polytrope ${_sdir}/polytrope_1d.csv)
+# The isobaric square (issue 46): its IC in the periodic unit box (2D, n = 16, two lattices:
+# 16^2 - 8^2 light + 16^2 dense = 448 particles), scored at t = 0: every error 0 (the particles
+# sit where the exact state puts them, the phases read from u).
+add_test(NAME ic_square_scored_at_t0 COMMAND bash -c
+  "$<TARGET_FILE:sphv> ic square --set n=16 --out square_ic.hdf5 --format swift && $<TARGET_FILE:sphv> convert --input square_ic.hdf5 --out square_ic.csv --format csv && test $(grep -vc '^#' square_ic.csv) -eq 449 && $<TARGET_FILE:sphv> score square --snapshot square_ic.hdf5 --set n=16 --out square_ic_score"
+  WORKING_DIRECTORY ${_sdir})
+set_tests_properties(ic_square_scored_at_t0 PROPERTIES PASS_REGULAR_EXPRESSION "t_end=0 \\(file: /Header Time\\)(.|\n)*L1_rho=0.000000e\\+00(.|\n)*misfit=0.000000e\\+00(.|\n)*v_rms=0.000000e\\+00, verdict: ok")
+sphv_refuses(square_odd_n run square --set n=18)
+sphv_refuses(square_dim_1 run square --set dim=1)
+sphv_refuses(square_wide_step run square --set width=0.2 lattice=one)
+sphv_refuses(square_smooth_two_lattices run square --set width=0.02)
+sphv_refuses(square_kernel_rate53 run square --set kernel=wendland_c2 hmode=rate53)
+sphv_refuses(square_unknown_kernel run square --set kernel=gaussian)
+add_test(NAME square_bad_input_exit_2 COMMAND bash -c
+  "$<TARGET_FILE:sphv> run square --set t_end=-1 --out sq_refused; a=$?; $<TARGET_FILE:sphv> ic square --set n=10 --out sq.csv; b=$?; test $a -eq 2 && test $b -eq 2 && test ! -e sq.csv && echo PASS"
+  WORKING_DIRECTORY ${_sdir})
+set_tests_properties(square_bad_input_exit_2 PROPERTIES PASS_REGULAR_EXPRESSION "PASS")
