@@ -46,6 +46,13 @@ inline void positive(const Snapshot& s, const std::string& name, const std::stri
                        std::to_string(c[i]) + " (must be > 0)");
 }
 
+// A case whose particles have D coordinates (2 or 3) refuses a file with another number.
+inline void require_dim(const Snapshot& s, int D, const std::string& who) {
+  if (s.dim != D)
+    throw InputError(s.path.string() + ": " + who + " needs " + std::to_string(D) + "D particles (" +
+                     (D == 2 ? "x, y" : "x, y, z") + "), the file has " + std::to_string(s.dim) + " coordinate(s)");
+}
+
 // The time and the adiabatic index of the cases whose parameters name them t_end and gamma.
 inline double real_t_end(const Params& p) { return p.real("t_end"); }
 inline double real_gamma(const Params& p) { return p.real("gamma"); }

@@ -14,14 +14,12 @@ namespace sphv::evrard_snapshots_case {
 namespace {
 
 using namespace snapshot_columns;
-using namespace ic_layout;
 
 Result score_evrard(const Params& prm, const Snapshot& s) {
   const std::string who = "evrard";
   positive(s, "rho", who);
   positive(s, "m", who);
-  if (s.dim != 3) throw InputError(s.path.string() + ": evrard needs 3D particles (x, y, z), the file has " +
-                                   std::to_string(s.dim) + " coordinate(s)");
+  require_dim(s, 3, who);
   double mass = 0.0;
   for (double m : s.at("m", who)) mass += m;
   // The reference is in units G = M = R = 1: a units check, not an accuracy bound.

@@ -18,9 +18,7 @@ using namespace snapshot_columns;
 Result score_gresho(const Params& prm, const Snapshot& s) {
   const std::string who = "gresho";
   positive(s, "m", who);
-  if (s.dim != 2)
-    throw InputError(s.path.string() + ": gresho needs 2D particles (x, y), the file has " + std::to_string(s.dim) +
-                     " coordinate(s)");
+  require_dim(s, 2, who);
   Result r;
   gresho::measure(r, vectors<2>(s, "", who, radial::centre<2>(prm)), vectors<2>(s, "v", who), s.at("m", who),
                   prm.real("t_end"), gresho::vortex(prm), prm.integer("n"));

@@ -11,7 +11,6 @@ namespace sphv::heat_snapshots_case {
 namespace {
 
 using namespace snapshot_columns;
-using namespace ic_layout;
 
 Result score_heat(const Params& prm, const Snapshot& s) {
   const std::string who = "heat";

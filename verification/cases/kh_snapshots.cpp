@@ -16,8 +16,7 @@ using namespace snapshot_columns;
 // McNally et al.'s mode amplitude M over the file's box (the unit box where it states none).
 Result score_kh(const Params&, const Snapshot& s) {
   const std::string who = "kh";
-  if (s.dim != 2) throw InputError(s.path.string() + ": kh needs 2D particles (x, y), the file has " + std::to_string(s.dim) +
-                                   " coordinate(s)");
+  require_dim(s, 2, who);
   if (!s.time) throw InputError(s.path.string() + ": no time in the snapshot (kh fits a growth rate to the files' times)");
   positive(s, "rho", who);
   positive(s, "m", who);

@@ -14,7 +14,6 @@ namespace sphv::noh_snapshots_case {
 namespace {
 
 using namespace snapshot_columns;
-using namespace ic_layout;
 
 Result score_noh(const Params& prm, const Snapshot& s) {
   const std::string who = "noh";

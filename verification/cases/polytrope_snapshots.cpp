@@ -22,8 +22,7 @@ Result score_polytrope(const Params& prm, const Snapshot& s) {
   const std::string who = "polytrope";
   positive(s, "rho", who);
   positive(s, "m", who);
-  if (s.dim != 3) throw InputError(s.path.string() + ": polytrope needs 3D particles (x, y, z), the file has " +
-                                   std::to_string(s.dim) + " coordinate(s)");
+  require_dim(s, 3, who);
   const auto& m = s.at("m", who);
   double mass = 0.0;
   for (double mi : m) mass += mi;

@@ -13,7 +13,6 @@ namespace sphv::sedov_snapshots_case {
 namespace {
 
 using namespace snapshot_columns;
-using namespace ic_layout;
 
 Result score_sedov(const Params& prm, const Snapshot& s) {
   const std::string who = "sedov";

@@ -12,7 +12,6 @@ namespace sphv::sound_wave_snapshots_case {
 namespace {
 
 using namespace snapshot_columns;
-using namespace ic_layout;
 
 // The wave along x with one wavelength across the box: the file's box along x where it states
 // one ([lo, hi): wavelength hi - lo, phase from lo), else the unit box [0, 1) of sphv's layout.
