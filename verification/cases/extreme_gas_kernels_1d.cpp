@@ -4,5 +4,5 @@
 
 namespace sphv::extreme {
 template sph::HydroOutcome evolve_gas_other_kernel<1>(const std::string&, sph::Particles<1>&, const sph::Box<1>&,
-                                                      const Method&);
+                                                      const Method&, sph::HydroHooks<1>);
 }  // namespace sphv::extreme

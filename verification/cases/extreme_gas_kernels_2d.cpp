@@ -4,5 +4,5 @@
 
 namespace sphv::extreme {
 template sph::HydroOutcome evolve_gas_other_kernel<2>(const std::string&, sph::Particles<2>&, const sph::Box<2>&,
-                                                      const Method&);
+                                                      const Method&, sph::HydroHooks<2>);
 }  // namespace sphv::extreme

@@ -4,5 +4,5 @@
 
 namespace sphv::extreme {
 template sph::HydroOutcome evolve_gas_other_kernel<3>(const std::string&, sph::Particles<3>&, const sph::Box<3>&,
-                                                      const Method&);
+                                                      const Method&, sph::HydroHooks<3>);
 }  // namespace sphv::extreme

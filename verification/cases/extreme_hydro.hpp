@@ -81,16 +81,17 @@ extern template sph::HydroOutcome evolve_gas<3>(sph::Particles<3>&, const sph::B
                                                 sph::HydroHooks<3>);
 
 // Evolves p as evolve_gas does with the default scheme's forms (energy (38); hmode iterate50 or
-// fixed) and no hooks, with the kernel K in the density (27), the (50) iteration and the pair loop.
+// fixed) and the hooks given, with the kernel K in the density (27), the (50) iteration and the pair loop.
 // Throws std::invalid_argument for another method: one scheme type a kernel (each costs compile
 // time; the two h modes are the same type).
 template <int D, class K>
-sph::HydroOutcome evolve_gas_with_kernel(sph::Particles<D>& p, const sph::Box<D>& box, const Method& m) {
+sph::HydroOutcome evolve_gas_with_kernel(sph::Particles<D>& p, const sph::Box<D>& box, const Method& m,
+                                         sph::HydroHooks<D> hooks = {}) {
   if (m.scheme != sph::ChapterScheme::name || (m.hmode != "iterate50" && m.hmode != "fixed") || m.energy != "38")
     throw std::invalid_argument(std::string("kernel ") + K::name + " runs with scheme=" + sph::ChapterScheme::name +
                                 ", hmode=iterate50 or fixed, energy=38 only");
   sph::Chapter<D, K> scheme(m, {});
-  return sph::evolve(scheme, p, box, m.controls);
+  return sph::evolve(scheme, p, box, m.controls, hooks);
 }
 
 // evolve_gas_with_kernel for the kernel named (not the cubic spline: evolve_gas), compiled in units
@@ -98,21 +99,21 @@ sph::HydroOutcome evolve_gas_with_kernel(sph::Particles<D>& p, const sph::Box<D>
 // dimension.
 template <int D>
 sph::HydroOutcome evolve_gas_other_kernel(const std::string& kernel, sph::Particles<D>& p, const sph::Box<D>& box,
-                                          const Method& m) {
+                                          const Method& m, sph::HydroHooks<D> hooks = {}) {
   sph::HydroOutcome out;
   sph::with_kernel<D>(kernel, [&](auto k) {
     using K = decltype(k);
-    if constexpr (!std::is_same_v<K, sph::CubicSpline<D>>) out = evolve_gas_with_kernel<D, K>(p, box, m);
+    if constexpr (!std::is_same_v<K, sph::CubicSpline<D>>) out = evolve_gas_with_kernel<D, K>(p, box, m, hooks);
     else throw std::logic_error("the cubic spline's gas is evolve_gas");
   });
   return out;
 }
 extern template sph::HydroOutcome evolve_gas_other_kernel<1>(const std::string&, sph::Particles<1>&, const sph::Box<1>&,
-                                                            const Method&);
+                                                            const Method&, sph::HydroHooks<1>);
 extern template sph::HydroOutcome evolve_gas_other_kernel<2>(const std::string&, sph::Particles<2>&, const sph::Box<2>&,
-                                                            const Method&);
+                                                            const Method&, sph::HydroHooks<2>);
 extern template sph::HydroOutcome evolve_gas_other_kernel<3>(const std::string&, sph::Particles<3>&, const sph::Box<3>&,
-                                                            const Method&);
+                                                            const Method&, sph::HydroHooks<3>);
 
 // Mean of value over particles in radial bins [k dr, (k+1) dr), k < bins, around the origin.
 struct Profile {

@@ -17,6 +17,7 @@
 #include "reference/kh_linear.hpp"
 #include "sph/core/lattice.hpp"
 #include "sph/density/fixed_neighbours.hpp"
+#include "sph/kernel/kernels.hpp"
 #include "verification/params.hpp"
 
 namespace sphv::kh {
@@ -52,13 +53,16 @@ inline sph::Particles<2> initial_particles(const Params& prm) {
   return p;
 }
 
-// u_i = p0 / ((gamma - 1) rho_i) with rho_i the summation density (27) at h from (50), the values
-// the first step starts from: the layer in pressure equilibrium as the scheme measures it. The
+// u_i = p0 / ((gamma - 1) rho_i) with rho_i the summation density (27) at h from (50) with the run's
+// kernel, the values the first step starts from: the layer in pressure equilibrium as the scheme measures it. The
 // profile's own rho(y_i) differs from the summation by the kernel's smoothing, ~rho'' h^2, which
 // at the interfaces (rho'' = 400 at L = 0.025) puts pressure blips of several per cent of p0, far
 // above the seed's pressure perturbation (~rho sigma A / k, 2e-3 of p0), into the initial state.
 inline void pressure_equilibrium(sph::Particles<2>& p, const Params& prm, double h_max) {
-  sph::smoothing_length_iterate(p, sph::unit_box<2>(true), sph::SmoothingLengthControl{prm.real("hfact"), h_max});
+  sph::with_kernel<2>(prm.text("kernel"), [&](auto k) {
+    sph::smoothing_length_iterate<2, decltype(k)>(p, sph::unit_box<2>(true),
+                                                  sph::SmoothingLengthControl{prm.real("hfact"), h_max});
+  });
   const double gamma = prm.real("gamma"), p0 = prm.real("p0");
   for (std::size_t i = 0; i < p.size(); ++i) p.u[i] = p0 / ((gamma - 1.0) * p.rho[i]);
 }
