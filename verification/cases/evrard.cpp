@@ -10,13 +10,12 @@
 #include <cmath>
 
 #include "reference/interpolate.hpp"
-#include "sph/gravity/self_gravity.hpp"
 #include "verification/case.hpp"
 #include "verification/cases/centre_param.hpp"
+#include "verification/cases/gas_self_gravity.hpp"
 #include "verification/cases/evrard_errors.hpp"
 #include "verification/cases/evrard_snapshots.hpp"
 #include "verification/cases/evrard_setup.hpp"
-#include "verification/cases/extreme_hydro.hpp"
 #include "verification/sweep.hpp"
 
 namespace sphv::evrard_case {

@@ -22,10 +22,9 @@
 #include <cmath>
 #include <numbers>
 
-#include "sph/gravity/self_gravity.hpp"
 #include "verification/case.hpp"
 #include "verification/cases/centre_param.hpp"
-#include "verification/cases/extreme_hydro.hpp"
+#include "verification/cases/gas_self_gravity.hpp"
 #include "verification/cases/polytrope_errors.hpp"
 #include "verification/cases/polytrope_setup.hpp"
 #include "verification/cases/polytrope_snapshots.hpp"
