@@ -8,6 +8,9 @@
 # heat, gravity and evrard) and the result and non-finite tests. Not instrumented here: the
 # physics (sph/, cases) and the sweep code; scripts/test-sanitizers.sh instruments everything.
 sphv_harness_library(harness_input_sanitized ${INPUT_SOURCES})
+if(SPHV_UNITY)  # eight to a unit, as harness_input
+  set_target_properties(harness_input_sanitized PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE 8)
+endif()
 if(SPHV_PCH)
   target_precompile_headers(harness_input_sanitized PRIVATE ${SPHV_PCH_HEADERS})  # its own flags (-O0, sanitizers)
 endif()

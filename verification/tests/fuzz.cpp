@@ -25,7 +25,6 @@ extern char** environ;
 namespace {
 
 namespace fs = std::filesystem;
-constexpr std::uint64_t seed = 20261130;
 
 // What a user can type: a setting key=value of a case, a case name, or a level list.
 struct Target {
@@ -146,7 +145,7 @@ std::string printable(const std::string& s) {
 
 TEST_CASE("fuzz: 10,000+ malformed inputs to every parser are refused with an InputError", "[fuzz]") {
   const auto all = targets();
-  sphv::fuzz::Inputs gen(seed);
+  sphv::fuzz::Inputs gen(sphv::fuzz::seed);
   // Per target: mutations until it has 40 refused inputs (or 400 tries: a few texts, such as a
   // free integer, accept most of their mutations).
   std::size_t n_refused = 0, n_accepted = 0, index = 0;
@@ -154,21 +153,21 @@ TEST_CASE("fuzz: 10,000+ malformed inputs to every parser are refused with an In
     int mine = 0;
     for (int tries = 0; mine < 40 && tries < 400; ++tries, ++index) {
       const std::string input = gen.mutate(t.valid);
-      INFO("seed " << seed << ", input " << index << ": " << (t.c ? t.c->name : "") << " " << t.key << " '"
+      INFO("seed " << sphv::fuzz::seed << ", input " << index << ": " << (t.c ? t.c->name : "") << " " << t.key << " '"
                    << printable(input) << "'");
       if (refused(t, input)) ++mine;
       else ++n_accepted;
     }
     n_refused += mine;
   }
-  WARN("fuzz (seed " << seed << "): " << n_refused << " malformed inputs refused, " << n_accepted
+  WARN("fuzz (seed " << sphv::fuzz::seed << "): " << n_refused << " malformed inputs refused, " << n_accepted
                      << " mutations accepted as valid");
   CHECK(n_refused >= 10000);
 }
 
 TEST_CASE("fuzz: malformed input on the command line ends in one error line, exit 2, no output", "[fuzz][cli]") {
   const auto all = targets();
-  sphv::fuzz::Inputs gen(seed + 1);
+  sphv::fuzz::Inputs gen(sphv::fuzz::seed + 1);
   const fs::path dir = fs::temp_directory_path() / ("sphv-fuzz-" + std::to_string(getpid()));
   fs::create_directories(dir);
   int ran = 0;
@@ -180,7 +179,7 @@ TEST_CASE("fuzz: malformed input on the command line ends in one error line, exi
     const auto args = command_line(t, input, dir / "out");
     std::string shown;
     for (const auto& a : args) shown += " '" + printable(a) + "'";
-    INFO("seed " << seed + 1 << ", input " << index << ": sphv" << shown);
+    INFO("seed " << sphv::fuzz::seed + 1 << ", input " << index << ": sphv" << shown);
     const Ran r = run_sphv(args, dir, 60.0);
     INFO("exit " << r.status << ", stderr '" << printable(r.err) << "', stdout '" << printable(r.out) << "'");
     REQUIRE_FALSE(r.timed_out);

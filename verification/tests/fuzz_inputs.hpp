@@ -12,6 +12,9 @@
 
 namespace sphv::fuzz {
 
+// The seed every fuzz test starts from (a failure prints it with the input's index).
+inline constexpr std::uint64_t seed = 20261130;
+
 // The whole content of file f (empty if it cannot be read): what a run wrote, or a valid file to mutate.
 inline std::string slurp(const std::filesystem::path& f) {
   std::ifstream in(f, std::ios::binary);

@@ -29,7 +29,6 @@ using namespace sphv;
 
 namespace {
 
-constexpr std::uint64_t seed = 20261130;
 constexpr std::size_t wanted = 10000;  // malformed files refused per reader (issue 17)
 #ifdef SPHV_SANITIZED
 // Under AddressSanitizer each HDF5 file open costs ~10 ms (the library callocs its multi-MB
@@ -315,12 +314,12 @@ template <class Make>
 void fuzz_reader(const std::string& format, std::uint64_t offset, Make make) {
   const fs::path dir = scratch_dir();
   const fs::path file = dir / ("snapshot." + std::string(format == "csv" ? "csv" : "h5"));
-  fuzz::Inputs gen(seed + offset);
+  fuzz::Inputs gen(fuzz::seed + offset);
   Tally tally;
   std::size_t index = 0, in_child = 0;
   const std::size_t target = format == "csv" ? wanted : wanted_hdf5;
   for (; tally.refused < target && index < 5 * target; ++index) {
-    INFO(format << " fuzz, seed " << seed + offset << ", input " << index << " (file " << file << ")");
+    INFO(format << " fuzz, seed " << fuzz::seed + offset << ", input " << index << " (file " << file << ")");
     const Reading r = make(file, gen);
     in_child += r.in_child;
     try_file(file, r.format, r.step, r.in_child, tally);
