@@ -126,7 +126,11 @@ std::vector<Check> gates(const Sweep& s) {
 //                                       0.03): M grows smoothly, at first order towards the rate;
 //   Wendland C4, hfact 4.5, alpha 0:    -0.07, 1.32, 1.89 (order 0.94 +- 0.05; not a variant).
 // So the cubic variants are known failures of the first-order claim and the Wendland C4 kernel at
-// hfact 4.5 (64 neighbours) with alpha 0.1 is the experiment that converges, as for gresho.
+// hfact 4.5 (64 neighbours) with alpha 0.1 is the experiment that converges, as for gresho. Both
+// agree with the literature: McNally et al. (2012) find SPH's growth poor on this set-up and trace
+// it to the zeroth-order inconsistency; Tricco (2019, arXiv:1907.03935; on the
+// smooth set-up of Lecoanet et al. 2016) needs a high-order kernel to resolve the seed and keep
+// spurious modes down, and then converges.
 // Band 0.35 as gresho's: the experiment's local orders 0.77, 0.85 on n = 32, 64, 96.
 OrderClaims kh_orders(const Params& p) {
   OrderClaims c;
