@@ -37,6 +37,7 @@
 #include "verification/cases/gresho_errors.hpp"
 #include "verification/cases/gresho_setup.hpp"
 #include "verification/cases/gresho_snapshots.hpp"
+#include "verification/cases/pairing.hpp"
 #include "verification/cases/radial_result.hpp"
 #include "verification/sweep.hpp"
 
@@ -62,6 +63,7 @@ Result run(const Params& prm) {
   std::vector<sph::Vec<2>> x(p.size());
   for (std::size_t i = 0; i < p.size(); ++i) x[i] = p.x[i] - sph::Vec<2>(0.5, 0.5);
   gresho::measure(r, x, p.v, p.m, out.t, g, n);
+  r.extra["paired_fraction"] = extreme::paired_fraction(p, box, 0.5 / n);
   double h = 0.0;
   for (double hi : p.h) h += hi / p.size();
   r.extra["h_mean"] = h;
@@ -83,9 +85,12 @@ void validate(const Params& p) {
 
 // The experiment: the catalogue variant that converges (Wendland C4, a wider support, weak viscosity).
 const char* const converging = "alpha=0.1,hfact=4.5,kernel=wendland_c4";
-bool converges(const Params& p) {
-  return p.text("kernel") == "wendland_c4" && p.real("hfact") == 4.5 && p.real("alpha") == 0.1;
-}
+// The kernel comparison (report): every kernel at the experiment's hfact and alpha. Measured (n =
+// 16, 32, 64): Wendland C2 0.168, 0.100, 0.057; C6 0.172, 0.109, 0.058; quintic 0.170, 0.110,
+// 0.060; cubic 0.175, 0.111, 0.100: the cubic's many neighbours pair (Dehnen & Aly 2012), and its
+// error stalls where the others keep the first order.
+bool wide(const Params& p) { return p.real("hfact") == 4.5 && p.real("alpha") == 0.1; }
+bool converges(const Params& p) { return wide(p) && p.text("kernel") != "cubic_spline"; }
 
 // Band 0.35: the converging variant measured local orders 0.74, 0.85 on n = 16, 32, 64, rising
 // towards 1 as the viscosity's O(h) share overtakes the E0 noise's (a fifth of L1_v at n = 64).
@@ -95,7 +100,17 @@ OrderClaims gresho_orders(const Params& p) {
                             "first order in h ~ 1/n while the zeroth-order (E0) force noise of the disordered particles "
                             "stays below it";
   if (converges(p)) {
-    c["L1_v"] = OrderClaim{1.0, 0.35, first + " (a Wendland kernel with many neighbours, Dehnen & Aly 2012)"};
+    c["L1_v"] = OrderClaim{1.0, 0.35, first + " (many neighbours with a kernel that does not pair there, Dehnen & Aly 2012)"};
+    return c;
+  }
+  if (wide(p)) {
+    c["L1_v"] = known_failure(
+        1.0, 0.35,
+        "the pairing instability of the cubic spline with many neighbours (hfact = {extra.hfact}; Dehnen & Aly 2012): "
+        "particles pair (a fraction {extra.paired_fraction} of them with another within half a lattice spacing at t_end), "
+        "the E0 noise grows, and the error stalls (mean |v_r| {extra.L1_v_r}, exact 0); L1_v {L1_v} at "
+        "{levels}, order {order.L1_v}, where the Wendland kernels at the same hfact converge",
+        converging);
     return c;
   }
   c["L1_v"] = known_failure(
@@ -112,7 +127,14 @@ OrderClaims gresho_orders(const Params& p) {
 // round-off moves it between instruction-set paths): bounds at 1.2 times these (sedov's margin)
 // at every level, which the finer levels' smaller errors meet.
 double l1_measured(const Params& p) {
-  if (converges(p)) return 0.1721;
+  if (wide(p)) {
+    const std::string k = p.text("kernel");
+    if (k == "wendland_c2") return 0.1675;
+    if (k == "wendland_c6") return 0.1717;
+    if (k == "quintic_spline") return 0.1695;
+    if (k == "cubic_spline") return 0.1746;
+    return 0.1721;  // Wendland C4
+  }
   return p.real("alpha") == 0.1 ? 0.2148 : 0.2573;
 }
 
@@ -134,8 +156,10 @@ std::vector<Check> gates(const Sweep& s) {
 
 // Levels: n = 16 resolves the vortex's radius 0.4 with 6.4 spacings; the converging variant's
 // n = 64 costs about 13 s of CPU on this machine, n = 128 eight times that (full tier only). The
-// cubic at alpha 0.1 is gated on 24, 48 (L1_v 0.179, 0.124, order 0.54): its local order from 16
-// to 32 lies close to the band.
+// variants at alpha 0.1 are gated on 24, 48, where their local orders lie clear of the band's
+// edges: the cubic at hfact 2.4, L1_v 0.179, 0.124 (order 0.54); at hfact 4.5 the cubic 0.139,
+// 0.106 (0.39), Wendland C2, C4, C6 and the quintic 0.84, 0.82, 0.80, 0.84 (from 16 to 32 the
+// quintic's 0.63 and the cubic's 0.66 sit at the edge, before the cubic pairs).
 const Levels levels = {.quick = {16, 32}, .standard = {16, 32, 64}, .full = {16, 32, 64, 128}};
 
 const Registration reg{Case{
@@ -160,9 +184,15 @@ const Registration reg{Case{
     .levels = levels,
     .orders = gresho_orders,
     .error_defs = gresho::error_defs,
-    .variants = {{}, {"alpha=0.1"}, {"kernel=wendland_c4", "hfact=4.5", "alpha=0.1"}},
+    .variants = {{},
+                 {"alpha=0.1"},
+                 {"kernel=wendland_c4", "hfact=4.5", "alpha=0.1"},
+                 {"kernel=wendland_c2", "hfact=4.5", "alpha=0.1"},
+                 {"kernel=wendland_c6", "hfact=4.5", "alpha=0.1"},
+                 {"kernel=quintic_spline", "hfact=4.5", "alpha=0.1"},
+                 {"kernel=cubic_spline", "hfact=4.5", "alpha=0.1"}},
     .levels_for = [](const Params& p) {
-      if (p.real("alpha") == 0.1 && p.text("kernel") == "cubic_spline")
+      if (p.real("alpha") == 0.1 && (p.text("kernel") == "cubic_spline" || wide(p)))
         return Levels{.quick = {24, 48}, .standard = {16, 32, 64}, .full = {16, 32, 64, 128}};
       return levels;
     },
