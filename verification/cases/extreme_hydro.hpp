@@ -146,6 +146,14 @@ std::vector<double> radii(const sph::Particles<D>& p) {
   return r;
 }
 
+// The mean smoothing length, reported as extra h_mean: the resolution a run reached.
+template <int D>
+double mean_h(const sph::Particles<D>& p) {
+  double h = 0.0;
+  for (double hi : p.h) h += hi / p.size();
+  return h;
+}
+
 // particles.csv columns. p is the written state's, (gamma - 1) rho u: the particles' own p is
 // from the last force evaluation, before the last kick of u (up to 1 % apart at Noh's shock),
 // and a snapshot whose p, rho and u disagree is refused by sphv score.

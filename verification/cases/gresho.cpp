@@ -64,9 +64,7 @@ Result run(const Params& prm) {
   for (std::size_t i = 0; i < p.size(); ++i) x[i] = p.x[i] - sph::Vec<2>(0.5, 0.5);
   gresho::measure(r, x, p.v, p.m, out.t, g, n);
   r.extra["paired_fraction"] = extreme::paired_fraction(p, box, 0.5 / n);
-  double h = 0.0;
-  for (double hi : p.h) h += hi / p.size();
-  r.extra["h_mean"] = h;
+  r.extra["h_mean"] = extreme::mean_h(p);
   r.particles = extreme::particle_table(p, m.gamma);
   return r;
 }

@@ -43,9 +43,7 @@ Result run(const Params& prm) {
   r.extra = {{"steps", out.steps}, {"t_reached", out.t}, {"alpha", m.alpha}, {"kernel", kernel}, {"hfact", m.hfact}};
   if (r.verdict != "stable") return r;
   kh::growth_result(r, prm, kh::fit_growth(ts, Ms, prm.real("t_fit_lo"), prm.real("t_fit_hi")), ts, Ms);
-  double h = 0.0;
-  for (double hi : p.h) h += hi / p.size();
-  r.extra["h_mean"] = h;
+  r.extra["h_mean"] = extreme::mean_h(p);
   r.particles = extreme::particle_table(p, m.gamma);
   return r;
 }

@@ -65,8 +65,7 @@ Result run_dim(const Params& prm) {
              {"kernel", kernel}};
   if (r.verdict != "stable") return r;
   const sound_wave::Fundamental f = sound_wave::measure<D>(r, p.x, p.v, p.m, p.rho, out.t, w, prm.real("A"), n);
-  double h = 0.0;
-  for (double hi : p.h) h += hi / p.size();
+  const double h = extreme::mean_h(p);
   r.extra["h_mean"] = h;
   // The floor at the run's own h/dx: (50) sets the initial h (kept fixed) to its tolerance, 1e-3.
   r.extra["h_over_dx"] = h * n;
