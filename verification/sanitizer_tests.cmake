@@ -20,10 +20,14 @@ list(TRANSFORM _tests APPEND .cpp)
 add_executable(sphv_sanitized_tests ${_tests} verification/tests/sanitizer/options.cpp
                $<TARGET_OBJECTS:harness_io> $<TARGET_OBJECTS:harness_physics> $<TARGET_OBJECTS:build_state>)
 target_link_libraries(sphv_sanitized_tests PRIVATE harness_input_sanitized catch_main)
+if(SPHV_UNITY)  # the test files in one unit: their headers parsed once at -O0
+  set_target_properties(sphv_sanitized_tests PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE 8)
+endif()
 target_compile_definitions(sphv_sanitized_tests PRIVATE SPHV_SOURCE_DIR="${CMAKE_SOURCE_DIR}" SPHV_EXE="$<TARGET_FILE:sphv>" SPHV_SANITIZED)
 foreach(_target harness_input_sanitized sphv_sanitized_tests)
   target_compile_options(${_target} PRIVATE ${SPHV_FP_FLAGS} ${SPHV_WARNINGS} ${SPHV_SANITIZER_FLAGS} -O0 -g1)
   target_link_options(${_target} PRIVATE ${SPHV_SANITIZER_FLAGS})
 endforeach()
 # Runtime options: compiled in (verification/tests/sanitizer/options.cpp).
-catch_discover_tests(sphv_sanitized_tests TEST_PREFIX "sanitized: " TEST_SPEC "[fuzz]~[cli],[result],[params]")
+catch_discover_tests(sphv_sanitized_tests TEST_PREFIX "sanitized: " TEST_SPEC "[fuzz]~[cli],[result],[params]"
+                     PROPERTIES COST 10)  # started early, as sphv_tests' (CMakeLists.txt)
