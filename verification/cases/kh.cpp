@@ -78,14 +78,15 @@ bool converges(const Params& p) {
   return p.text("kernel") == "wendland_c4" && p.real("hfact") == 4.5 && p.real("alpha") == 0.1;
 }
 
-// The growth error's largest value measured on the variant's quick and standard levels (cubic alpha
-// = 1: 0.311, 0.369, 0.387 at n = 32, 64, 96; alpha = 0: 0.393, 0.692, 0.798; Wendland C4: 1.184
-// at n = 32, where M does not yet grow); the gate holds each level at 1.5 times it. A loose bound,
-// which a fault that stops the growth or doubles it crosses; the order claim (kh_orders) and the
-// exact check of the measurement (M0) are the verification.
+// The growth error's largest value measured on the variant's levels of every tier (cubic alpha =
+// 1: 0.311, 0.369, 0.387, 1.240, 0.684 at n = 32, 64, 96, 128, 256, the rate negative at 128;
+// alpha = 0: 0.393, 0.692, 0.798, 0.726, 0.549; Wendland C4: 1.184 at n = 32, where M does not yet
+// grow, then 0.695, 0.489, 0.381, 0.221); the gate holds each level at 1.5 times it. A loose
+// bound, which a fault that stops the growth or doubles it on the Wendland variant crosses; the
+// order claim (kh_orders) and the exact check of the measurement (M0) are the verification.
 double growth_measured(const Params& p) {
   if (converges(p)) return 1.184;
-  return p.real("alpha") > 0.0 ? 0.387 : 0.798;
+  return p.real("alpha") > 0.0 ? 1.240 : 0.798;
 }
 
 std::vector<Check> gates(const Sweep& s) {
@@ -129,7 +130,8 @@ std::vector<Check> gates(const Sweep& s) {
 // it to the zeroth-order inconsistency; Tricco (2019, arXiv:1907.03935; on the
 // smooth set-up of Lecoanet et al. 2016) needs a high-order kernel to resolve the seed and keep
 // spurious modes down, and then converges.
-// Band 0.35 as gresho's: the experiment's local orders 0.77, 0.85 on n = 32, 64, 96.
+// Band 0.35 as gresho's: the experiment's local orders 0.77, 0.85 on n = 32, 64, 96 (full tier,
+// n = 32 ... 256: 0.81 +- 0.01).
 OrderClaims kh_orders(const Params& p) {
   OrderClaims c;
   const std::string first = "the kernel's smoothing of the layer (support comparable with its width L) and the "
