@@ -94,26 +94,29 @@ sph::HydroOutcome evolve_gas_with_kernel(sph::Particles<D>& p, const sph::Box<D>
   return sph::evolve(scheme, p, box, m.controls, hooks);
 }
 
-// evolve_gas_with_kernel for the kernel named (not the cubic spline: evolve_gas), compiled in units
-// of their own (extreme_gas_kernels_1d.cpp, _2d.cpp, _3d.cpp) beside the cubic's 12 scheme types a
-// dimension.
+// Evolves p with the kernel named: the cubic spline by evolve_gas (any scheme m names), another by
+// evolve_gas_with_kernel. The other kernels' scenes compile in units of their own
+// (extreme_gas_kernels_1d.cpp, _2d.cpp, _3d.cpp) beside the cubic's 12 scheme types a dimension.
 template <int D>
-sph::HydroOutcome evolve_gas_other_kernel(const std::string& kernel, sph::Particles<D>& p, const sph::Box<D>& box,
-                                          const Method& m, sph::HydroHooks<D> hooks = {}) {
+sph::HydroOutcome evolve_gas_kernel(const std::string& kernel, sph::Particles<D>& p, const sph::Box<D>& box,
+                                    const Method& m, sph::HydroHooks<D> hooks = {}) {
   sph::HydroOutcome out;
   sph::with_kernel<D>(kernel, [&](auto k) {
     using K = decltype(k);
-    if constexpr (!std::is_same_v<K, sph::CubicSpline<D>>) out = evolve_gas_with_kernel<D, K>(p, box, m, hooks);
-    else throw std::logic_error("the cubic spline's gas is evolve_gas");
+    if constexpr (std::is_same_v<K, sph::CubicSpline<D>>) out = evolve_gas(p, box, m, hooks);
+    else out = evolve_gas_with_kernel<D, K>(p, box, m, hooks);
   });
   return out;
 }
-extern template sph::HydroOutcome evolve_gas_other_kernel<1>(const std::string&, sph::Particles<1>&, const sph::Box<1>&,
-                                                            const Method&, sph::HydroHooks<1>);
-extern template sph::HydroOutcome evolve_gas_other_kernel<2>(const std::string&, sph::Particles<2>&, const sph::Box<2>&,
-                                                            const Method&, sph::HydroHooks<2>);
-extern template sph::HydroOutcome evolve_gas_other_kernel<3>(const std::string&, sph::Particles<3>&, const sph::Box<3>&,
-                                                            const Method&, sph::HydroHooks<3>);
+extern template sph::HydroOutcome evolve_gas_kernel<1>(const std::string&, sph::Particles<1>&,
+                                                      const sph::Box<1>&, const Method&,
+                                                      sph::HydroHooks<1>);
+extern template sph::HydroOutcome evolve_gas_kernel<2>(const std::string&, sph::Particles<2>&,
+                                                      const sph::Box<2>&, const Method&,
+                                                      sph::HydroHooks<2>);
+extern template sph::HydroOutcome evolve_gas_kernel<3>(const std::string&, sph::Particles<3>&,
+                                                      const sph::Box<3>&, const Method&,
+                                                      sph::HydroHooks<3>);
 
 // Mean of value over particles in radial bins [k dr, (k+1) dr), k < bins, around the origin.
 struct Profile {

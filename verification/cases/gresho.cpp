@@ -55,7 +55,7 @@ Result run(const Params& prm) {
   const std::string kernel = prm.text("kernel");
   const sph::Box<2> box = sph::unit_box<2>(true);
   const sph::HydroOutcome out =
-      kernel == "cubic_spline" ? extreme::evolve_gas(p, box, m) : extreme::evolve_gas_other_kernel<2>(kernel, p, box, m);
+      extreme::evolve_gas_kernel<2>(kernel, p, box, m);
   Result r = radial::start(p.size(), out);
   r.extra = {{"steps", out.steps}, {"t_reached", out.t}, {"kernel", kernel}, {"hfact", m.hfact}, {"alpha", m.alpha},
              {"equilibrium_error", gresho::equilibrium_error(g)}};

@@ -36,9 +36,7 @@ Result run(const Params& prm) {
     ts.push_back(t), Ms.push_back(kh::mode_amplitude(q.x, q.v, q.m, q.rho, lo, len));
   };
   const std::string kernel = prm.text("kernel");
-  const sph::HydroOutcome out = kernel == "cubic_spline"
-                                    ? extreme::evolve_gas(p, sph::unit_box<2>(true), m, hooks)
-                                    : extreme::evolve_gas_other_kernel<2>(kernel, p, sph::unit_box<2>(true), m, hooks);
+  const sph::HydroOutcome out = extreme::evolve_gas_kernel<2>(kernel, p, sph::unit_box<2>(true), m, hooks);
   Result r = radial::start(p.size(), out);
   r.extra = {{"steps", out.steps}, {"t_reached", out.t}, {"alpha", m.alpha}, {"kernel", kernel}, {"hfact", m.hfact}};
   if (r.verdict != "stable") return r;

@@ -52,8 +52,7 @@ Result run_dim(const Params& prm) {
   for (std::size_t i = 0; i < p.size(); ++i) E0 += p.m[i] * p.u[i];
 
   const std::string kernel = prm.text("kernel");
-  const sph::HydroOutcome out = kernel == "cubic_spline" ? extreme::evolve_gas(p, box, m)
-                                                         : extreme::evolve_gas_other_kernel<D>(kernel, p, box, m);
+  const sph::HydroOutcome out = extreme::evolve_gas_kernel<D>(kernel, p, box, m);
   Result r = radial::start(p.size(), out);
   r.extra = {{"steps", out.steps}, {"t_reached", out.t}, {"t_end", m.controls.t_end}, {"xi0", exact.xi0()},
              {"R_exact", exact.shock_radius(E, rho0, m.controls.t_end)}, {"dim", D}, {"r_blast", r_b},

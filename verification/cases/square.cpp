@@ -46,8 +46,7 @@ Result run_dim(const Params& prm) {
   sph::Particles<D> p = square::initial_particles<D>(prm);
   const std::string kernel = prm.text("kernel");
   const sph::Box<D> box = sph::unit_box<D>(true);
-  const sph::HydroOutcome out = kernel == "cubic_spline" ? extreme::evolve_gas(p, box, m)
-                                                         : extreme::evolve_gas_other_kernel<D>(kernel, p, box, m);
+  const sph::HydroOutcome out = extreme::evolve_gas_kernel<D>(kernel, p, box, m);
   Result r = radial::start(p.size(), out);
   r.extra = {{"steps", out.steps}, {"t_reached", out.t}, {"dim", D}};
   if (r.verdict != "stable") return r;
