@@ -1,5 +1,6 @@
 // Case `gravity`: Barnes-Hut tree forces (9.4.7, monopole and quadrupole (79)-(89)) against the
 // O(N^2) direct sum, as a function of the opening angle theta; cost against N.
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -201,6 +202,28 @@ const std::map<std::string, std::array<Row6, 3>> largest_measured = {
        /* energy */ {3.28e-05, 5.36e-04, 2.09e-03, 6.58e-07, 6.74e-06, 4.25e-05}}}},
 };
 
+// The same at N = 100000 (the full tier's finest level), measured. The max over particles samples
+// the tail of the error distribution further as N grows: 1.9x to 11x the table above for the
+// Plummer sphere (the particles far out, where |a| is small), so that level has bounds of its
+// own; p99 and the energy stay within 2.2x.
+const std::map<std::string, std::array<Row6, 3>> measured_n100000 = {
+    {"plummer",
+     {{
+       /* p99    */ {4.24e-04, 4.72e-03, 1.52e-02, 3.74e-05, 1.19e-03, 6.93e-03},
+       /* max    */ {1.28e-02, 1.90e-01, 3.32e-01, 1.66e-03, 5.27e-02, 2.69e-01},
+       /* energy */ {2.87e-06, 1.43e-05, 7.65e-05, 4.94e-08, 6.49e-07, 5.80e-06}}}},
+    {"uniform",
+     {{
+       /* p99    */ {7.23e-04, 9.47e-03, 4.34e-02, 5.28e-05, 1.69e-03, 1.54e-02},
+       /* max    */ {9.36e-03, 6.45e-02, 3.94e-01, 6.77e-04, 1.68e-02, 5.16e-02},
+       /* energy */ {7.21e-05, 7.18e-04, 1.42e-03, 1.12e-06, 1.07e-05, 5.06e-05}}}},
+    {"clustered",
+     {{
+       /* p99    */ {2.02e-03, 1.62e-02, 4.09e-02, 3.40e-05, 9.42e-04, 4.86e-03},
+       /* max    */ {7.11e-03, 3.95e-02, 1.41e-01, 3.66e-04, 5.70e-03, 3.79e-02},
+       /* energy */ {7.08e-05, 8.85e-04, 2.45e-03, 1.03e-07, 7.47e-06, 1.28e-06}}}},
+};
+
 std::vector<Check> gates(const Sweep& s) {
   std::vector<Check> c;
   const auto& r = s.runs.back();
@@ -208,26 +231,32 @@ std::vector<Check> gates(const Sweep& s) {
   const std::string model = r.params.value("model", std::string("plummer"));
   const bool plummer = model == "plummer";
   const auto v = Check::Kind::verification;
-  // Bounds per model, statistic, multipole order and theta at every level: 1.5x the largest
-  // measured value. The quadrupole p99 bounds lie below the monopole's measured p99 at every
-  // theta and level (by 1.2x at theta 0.8 up to 8x at 0.2), so a tree that drops the quadrupole
-  // term fails them (shown by experiment, see the gates report of issue 13). With another
-  // opening criterion (opening=plain) or softening nothing was measured: no bounds then, only
-  // the published numbers and the rates in theta below.
+  // Bounds per model, statistic, multipole order and theta at every measured level: 1.5x the
+  // largest measured value at N <= 20000, and at N = 100000 over all five levels. The
+  // quadrupole p99 bounds lie below the monopole's measured p99 at every theta and level (by 1.2x
+  // at theta 0.8 up to 8x at 0.2), so a tree that drops the quadrupole term fails them (shown by
+  // experiment, see the gates report of issue 13). At other N, with another opening criterion
+  // (opening=plain) or softening nothing was measured: no bounds then, only the published
+  // numbers and the rates in theta below.
   const bool measured = r.params.value("opening", std::string("robust")) == "robust" &&
                         r.params.value("eps", 0.0) == 0.01 && largest_measured.count(model);
   if (measured)
     for (const auto& run : s.runs) {
-      const std::string at = "_n" + std::to_string(run.params.value("n", 0L));
+      const long n = run.params.value("n", 0L);
+      if (n > 20000 && n != 100000) continue;
+      const std::string at = "_n" + std::to_string(n);
       const auto& m = largest_measured.at(model);
+      const auto& m5 = measured_n100000.at(model);
+      const std::string source = n <= 20000 ? "1.5x the largest measured at N = 4096..20000 (" + model + ")"
+                                            : "1.5x the largest measured at N = 4096..100000 (" + model + ")";
       int k = 0;
       for (const auto mp : {sph::Multipole::monopole, sph::Multipole::quadrupole})
         for (double theta : {0.2, 0.5, 0.8}) {
           int w = 0;
           for (const char* what : {"p99", "max", "energy"}) {
             const std::string name = key(what, mp, theta);
-            c.push_back({"bound_" + name + at, run.errors.at(name), 0.0, 1.5 * m[w][k],
-                         "1.5x the largest measured at N = 4096..20000 (" + model + ")", v, name});
+            const double largest = n <= 20000 ? m[w][k] : std::max(m[w][k], m5[w][k]);
+            c.push_back({"bound_" + name + at, run.errors.at(name), 0.0, 1.5 * largest, source, v, name});
             ++w;
           }
           ++k;

@@ -272,23 +272,27 @@ std::vector<Check> gates(const Sweep& s) {
                    K::verification, "tensor_73"});
       if (find_case(s.case_name).parse(s.settings).real("hgrow") == 0.0) {
         // At fixed h/dx the off-diagonal error adds to the trace's: tensor_73 / brookshaw measured
-        // 1.52 to 3.5 (n = 32-64); bounds [1.2, 5] (the ratio grows towards the floor). At most
-        // 0.08 (1.5x the largest finest value, 5.2e-2 at n = 32 in 3D).
-        c.push_back({"tensor_73_over_brookshaw", err("tensor_73") / err("brookshaw"), 1.2, 5.0,
+        // 1.52 to 3.5 (n = 32-64), at least 1.2. No upper bound: the ratio grows without one as
+        // brookshaw falls as n^-2 and tensor_73 levels off at its floor (8.2 at n = 128 in 2D).
+        // tensor_73 at most 0.08 (1.5x the largest finest value, 5.2e-2 at n = 32 in 3D).
+        c.push_back({"tensor_73_over_brookshaw", err("tensor_73") / err("brookshaw"), 1.2, 1e9,
                      "off-diagonal lattice moments are not isotropic", K::verification, "tensor_73"});
         c.push_back({"tensor_73_bound", err("tensor_73"), 0.0, 0.08, "measured <= 5.2e-2 at the finest levels, margin 1.5x",
                      K::verification, "tensor_73"});
       }
     }
   } else {
-    // Disorder adds a non-vanishing first-moment error on top of the lattice error (which the
-    // lattice symbol gives): the jittered error exceeds it, measured 1.26 (3D, n = 32) to 80
-    // (1D, n = 64) times; bounds [1, 120].
-    c.push_back({"jitter_error_over_lattice", err("brookshaw") / x["lattice_symbol_error"].get<double>(), 1.0, 120.0,
+    // Disorder adds to the lattice error (which the lattice symbol gives): the jittered error
+    // exceeds it, measured 1.26 (3D, n = 32) to 600 (1D, n = 256), at least 1. No upper bound:
+    // at fixed h/dx the disorder part grows with n while the lattice error falls; the disorder
+    // part's own order is gated below.
+    c.push_back({"jitter_error_over_lattice", err("brookshaw") / x["lattice_symbol_error"].get<double>(), 1.0, 1e9,
                  "jittered set at fixed h/dx: zeroth-order error does not vanish", K::verification, "brookshaw"});
     // The chapter's warning, measured: the two-pass symmetric form is noisier than Brookshaw,
-    // 1.51 to 3.45 times at every finest level; bounds [1.2, 5].
-    c.push_back({"flux_56_58_over_brookshaw", err("flux_56_58") / err("brookshaw"), 1.2, 5.0,
+    // 1.51 to 3.45 times at every finest level of quick and standard (6.8 and 7.6 at n = 128):
+    // at least 1.2. Its disorder part grows one power of n faster at fixed h/dx (disorder.hpp),
+    // so the ratio has no upper bound.
+    c.push_back({"flux_56_58_over_brookshaw", err("flux_56_58") / err("brookshaw"), 1.2, 1e9,
                  "section 9.4.6 and Brookshaw (1985): the two-pass form is sensitive to disorder", K::verification,
                  "flux_56_58"});
     for (const auto& m : jitter_measured) {
