@@ -63,8 +63,8 @@ inline OrderClaim jittered_claim(int dim, double hgrow, const Terms& terms, doub
   double lo = smoothing_order(hgrow), hi = lo;
   for (const Term& t : terms) lo = std::min(lo, term_order(dim, hgrow, t)), hi = std::max(hi, term_order(dim, hgrow, t));
   if (!(lo > 0.0))
-    return no_order("jittered set: the operator has no limit at this growth of h/dx. Its disorder part (the excess over "
-                    "the lattice's error, in quadrature) is {extra.disorder_" + error + "} at {levels}: by theory "
+    return no_order("jittered set with h/dx = hfact (n/16)^hgrow: the operator has no limit. Its disorder part (its "
+                    "residual's difference with the unjittered lattice's) is {extra.disorder_" + error + "} at {levels}: by theory "
                     "(disorder.hpp) of order {extra.disorder_order_" + error + "} in n, not above zero (gated)");
   char why[220];
   std::snprintf(why, sizeof why,
