@@ -27,6 +27,8 @@
 #include <cstdio>
 #include <map>
 #include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "verification/case.hpp"
@@ -44,13 +46,31 @@ using Terms = std::vector<Term>;
 inline double term_order(int dim, double hgrow, const Term& t) {
   return hgrow * (t.halves * dim / 2.0 + 1.0) - t.s * (1.0 - hgrow);
 }
+inline double smoothing_order(double hgrow) { return 2.0 * (1.0 - hgrow); }
+// The smallest and the largest order among the terms and, with_smoothing, the smoothing error's.
+inline std::pair<double, double> order_range(int dim, double hgrow, const Terms& terms, bool with_smoothing) {
+  double lo = with_smoothing ? smoothing_order(hgrow) : term_order(dim, hgrow, terms.front()), hi = lo;
+  for (const Term& t : terms) lo = std::min(lo, term_order(dim, hgrow, t)), hi = std::max(hi, term_order(dim, hgrow, t));
+  return {lo, hi};
+}
 // The disorder part's asymptotic order: its slowest term.
 inline double disorder_order(int dim, double hgrow, const Terms& terms) {
-  double q = term_order(dim, hgrow, terms.front());
-  for (const Term& t : terms) q = std::min(q, term_order(dim, hgrow, t));
-  return q;
+  return order_range(dim, hgrow, terms, false).first;
 }
-inline double smoothing_order(double hgrow) { return 2.0 * (1.0 - hgrow); }
+
+// sqrt(sum_i |r_i - m_i|^2 / sum_i |ref_i|^2) over particles, m = 0 without minus: an error from
+// its residuals, or the disorder part from the residuals of a jittered set and of its lattice
+// (the same particle order). T is double or an Eigen vector or matrix.
+template <class T>
+double relative_l2(const std::vector<T>& r, const std::vector<T>* minus, const std::vector<T>& ref) {
+  auto sq = [](const T& v) {
+    if constexpr (std::is_arithmetic_v<T>) return v * v;
+    else return v.squaredNorm();
+  };
+  double num = 0.0, den = 0.0;
+  for (std::size_t i = 0; i < r.size(); ++i) num += sq(minus ? T(r[i] - (*minus)[i]) : r[i]), den += sq(ref[i]);
+  return std::sqrt(num / den);
+}
 
 // The claim for `error` on a jittered set: between the smallest and the largest of the smoothing
 // order and its disorder terms' orders where every one is positive, widened by min_band (the
@@ -60,8 +80,7 @@ inline double smoothing_order(double hgrow) { return 2.0 * (1.0 - hgrow); }
 // measured disorder part (extras disorder_<error> and disorder_order_<error>, written by the
 // case's run) as the evidence.
 inline OrderClaim jittered_claim(int dim, double hgrow, const Terms& terms, double min_band, const std::string& error) {
-  double lo = smoothing_order(hgrow), hi = lo;
-  for (const Term& t : terms) lo = std::min(lo, term_order(dim, hgrow, t)), hi = std::max(hi, term_order(dim, hgrow, t));
+  const auto [lo, hi] = order_range(dim, hgrow, terms, true);
   if (!(lo > 0.0))
     return no_order("jittered set with h/dx = hfact (n/16)^hgrow: the operator has no limit. Its disorder part (its "
                     "residual's difference with the unjittered lattice's) is {extra.disorder_" + error + "} at {levels}: by theory "
@@ -85,8 +104,7 @@ inline std::vector<Check> disorder_scaling(const Sweep& sw, const std::map<std::
     std::vector<double> n, part;
     for (std::size_t k = 0; k < sw.runs.size() && k < sw.levels.size(); ++k)
       n.push_back(double(sw.levels[k])), part.push_back(sw.runs[k].extra.value("disorder_" + e, 0.0));
-    double lo = term_order(dim, hgrow, ts.front()), hi = lo;
-    for (const Term& t : ts) lo = std::min(lo, term_order(dim, hgrow, t)), hi = std::max(hi, term_order(dim, hgrow, t));
+    const auto [lo, hi] = order_range(dim, hgrow, ts, false);
     c.push_back({"disorder_order_" + e, observed_order(n, part).p, lo - tol, hi + tol,
                  "the disorder part's fitted order between its terms' hgrow a - s (1 - hgrow) (disorder.hpp); " + measured,
                  Check::Kind::verification, e});

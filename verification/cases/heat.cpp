@@ -68,10 +68,7 @@ Result run_dim(const Params& prm) {
   // the lattice's second moment (0 in 1D at h/dx = 2 or 4, 8.6e-4 in 2D at 4). To first order in
   // eps that is the exact solution a little later, at t (1 + eps): the part of the pulse's error
   // that no n removes, spatial_gauss_floor. The rest is the O(h^2) error.
-  const sph::Vec<D> k_small = sph::Vec<D>::Constant(1e-3 * n / hfact);
-  const double eps = (form == "brookshaw" ? heat::brookshaw_symbol<D>(k_small, hfact, 1.0 / n)
-                                          : heat::two_pass_symbol<D>(k_small, hfact, 1.0 / n)) /
-                         k_small.squaredNorm() - 1.0;
+  const double eps = heat::long_wave_rate_error<D>(form, hfact, 1.0 / n);
   const double gauss_floor = rms_error(gauss(t_end * (1.0 + eps)), gauss_exact);
 
   // Explicit integration at the diffusion criterion dt = C h^2 / chi.

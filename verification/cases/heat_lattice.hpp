@@ -101,6 +101,16 @@ double two_pass_symbol(const sph::Vec<D>& k, double ratio, double dx) {
   return gradient_symbol<D>(k, ratio, dx).squaredNorm();
 }
 
+// The lattice floor at fixed h/dx = ratio: the relative error of the operator's long-wave rate,
+// symbol(k) / k^2 - 1 as k dx -> 0 (signed; k = 1e-3 / h, where the (k h)^2 term is 1e-6 of it):
+// the lattice's second moment against the continuum's.
+template <int D>
+double long_wave_rate_error(const std::string& form, double ratio, double dx) {
+  const sph::Vec<D> k = sph::Vec<D>::Constant(1e-3 / (ratio * dx));
+  const double sym = form == "brookshaw" ? brookshaw_symbol<D>(k, ratio, dx) : two_pass_symbol<D>(k, ratio, dx);
+  return sym / k.squaredNorm() - 1.0;
+}
+
 // Relative error of the Hessian tensor (73) (errata: the (d + 2) factor) on the sine product
 // prod_a sin(k_a x_a) with k_a = k for every a: for the mode exp(i q.x) its symbol is
 // H(q) = sum_r V (cos(q.r) - 1) F(r) ((d + 2) r r^T / r^2 - I), F = -W'(r) / r, against the exact

@@ -69,20 +69,13 @@ struct Residuals {
     res_f.resize(p.size());
     for (std::size_t i = 0; i < p.size(); ++i) res_f[i] = fi[i] - f[i], res19[i] -= grad[i], res32[i] -= grad[i];
   }
-  // Relative L2 of an error's residual, or of its difference with another set's (same particle
-  // order): the error, or the disorder part.
+  // Relative L2 of an error's residual, or of its difference with another set's: the error, or the
+  // disorder part (disorder.hpp).
   double relative(const std::string& e, const Residuals* minus = nullptr) const {
-    double num = 0.0, den = 0.0;
-    for (std::size_t i = 0; i < p.size(); ++i)
-      if (e == "L2_f") {
-        const double d = res_f[i] - (minus ? minus->res_f[i] : 0.0);
-        num += d * d, den += f[i] * f[i];
-      } else {
-        const auto& r = e == "L2_grad19" ? res19 : res32;
-        const auto& m = e == "L2_grad19" ? (minus ? &minus->res19 : nullptr) : (minus ? &minus->res32 : nullptr);
-        num += (r[i] - (m ? (*m)[i] : sph::Vec<D>::Zero())).squaredNorm(), den += grad[i].squaredNorm();
-      }
-    return std::sqrt(num / den);
+    if (e == "L2_f") return disorder::relative_l2(res_f, minus ? &minus->res_f : nullptr, f);
+    const bool direct = e == "L2_grad19";
+    const auto* other = minus ? &(direct ? minus->res19 : minus->res32) : nullptr;
+    return disorder::relative_l2(direct ? res19 : res32, other, grad);
   }
 };
 

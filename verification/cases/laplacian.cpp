@@ -52,8 +52,6 @@ struct Residuals {
   std::map<std::string, std::vector<double>> forms;
   std::vector<Eigen::Matrix<double, D, D>> hess, tensor;
   double trace_gap = 0.0, lap_scale = 0.0;
-  std::vector<double> brook;  // (69) itself, for the profile figure
-  std::vector<double> sym;    // (56)+(58) itself
 
   explicit Residuals(const heat::ParticleSet<D>& s) {
     const auto& p = s.p;
@@ -71,8 +69,8 @@ struct Residuals {
           hess[i](a, b) = a == b ? -v * sn[a] : v;
         }
     }
-    brook = sph::brookshaw_laplacian<D>(p, T, s.nb());
-    sym = sph::two_pass_laplacian<D, sph::SymmetricForm>(p, T, s.nb());
+    const auto brook = sph::brookshaw_laplacian<D>(p, T, s.nb());
+    const auto sym = sph::two_pass_laplacian<D, sph::SymmetricForm>(p, T, s.nb());
     const auto diff = sph::two_pass_laplacian<D, sph::DifferenceForm>(p, T, s.nb());
     const auto H = sph::hessian<D>(p, T, s.nb());
     const std::pair<const char*, const std::vector<double>*> ops[] = {
@@ -89,21 +87,14 @@ struct Residuals {
       lap_scale = std::max(lap_scale, std::abs(lap[i]));
     }
   }
-  // Relative L2 of a form's residual, or of its difference with another set's (same particle
-  // order): the error, or the disorder part.
+  // Relative L2 of a form's residual, or of its difference with another set's: the error, or the
+  // disorder part (disorder.hpp).
   double relative(const std::string& e, const Residuals* minus = nullptr) const {
-    double num = 0.0, den = 0.0;
-    for (std::size_t i = 0; i < lap.size(); ++i) {
-      if (e == "tensor_73") {
-        num += (tensor[i] - (minus ? minus->tensor[i] : Eigen::Matrix<double, D, D>::Zero())).squaredNorm();
-        den += hess[i].squaredNorm();
-      } else {
-        const double d = forms.at(e)[i] - (minus ? minus->forms.at(e)[i] : 0.0);
-        num += d * d, den += lap[i] * lap[i];
-      }
-    }
-    return std::sqrt(num / den);
+    if (e == "tensor_73") return disorder::relative_l2(tensor, minus ? &minus->tensor : nullptr, hess);
+    return disorder::relative_l2(forms.at(e), minus ? &minus->forms.at(e) : nullptr, lap);
   }
+  // A form's value at particle i (its residual plus the exact Laplacian).
+  double value(const std::string& e, std::size_t i) const { return forms.at(e)[i] + lap[i]; }
 };
 
 template <int D>
@@ -115,8 +106,6 @@ Result run_dim(const Params& prm) {
   const std::size_t N = p.size();
   const Residuals<D> res(s);
   const auto& lap = res.lap;
-  const auto& brook = res.brook;
-  const auto& sym = res.sym;
   const double trace_gap = res.trace_gap, lap_scale = res.lap_scale;
   Result r;
   r.n_particles = N;
@@ -125,11 +114,11 @@ Result run_dim(const Params& prm) {
   // error of the lattice symbol at k = 2 pi (1, ..., 1), and its limit at fixed h/dx (k dx -> 0)
   // is the lattice second-moment floor.
   const double dx = 1.0 / n;
-  const sph::Vec<D> k = sph::Vec<D>::Constant(two_pi), k_small = sph::Vec<D>::Constant(1e-3 / (hfact * dx));
+  const sph::Vec<D> k = sph::Vec<D>::Constant(two_pi);
   r.extra = {{"dim", D}, {"hfact", hfact}, {"jitter", jitter}, {"h", hfact * dx}, {"h_over_dx", hfact},
              {"neighbours_mean", double(s.nl.pairs()) / N},
              {"lattice_symbol_error", std::abs(heat::brookshaw_symbol<D>(k, hfact, dx) / k.squaredNorm() - 1.0)},
-             {"lattice_floor", std::abs(heat::brookshaw_symbol<D>(k_small, hfact, dx) / k_small.squaredNorm() - 1.0)},
+             {"lattice_floor", std::abs(heat::long_wave_rate_error<D>("brookshaw", hfact, dx))},
              {"lattice_symbol_error_two_pass", std::abs(heat::two_pass_symbol<D>(k, hfact, dx) / k.squaredNorm() - 1.0)},
              {"lattice_symbol_error_tensor", heat::hessian_symbol_error<D>(two_pi, hfact, dx)},
              {"trace_73_minus_69", trace_gap / lap_scale}};
@@ -146,7 +135,7 @@ Result run_dim(const Params& prm) {
   if constexpr (D == 1) {
     const auto b67 = sph::brookshaw_laplacian_1d(p, res.T, s.nb());
     double gap = 0.0;
-    for (std::size_t i = 0; i < N; ++i) gap = std::max(gap, std::abs(b67[i] - brook[i]));
+    for (std::size_t i = 0; i < N; ++i) gap = std::max(gap, std::abs(b67[i] - res.value("brookshaw", i)));
     r.extra["eq67_minus_eq69"] = gap / lap_scale;
   }
   // Profile along the first axis (the particles nearest the line x_b = 1/4 for b > 0).
@@ -157,8 +146,8 @@ Result run_dim(const Params& prm) {
     for (int a = 1; a < D; ++a) on_line = on_line && std::abs(p.x[i][a] - row) < 0.5 * dx;
     if (!on_line) continue;
     se.x.push_back(p.x[i][0]), se.y.push_back(lap[i] / (D * two_pi * two_pi));
-    sb.x.push_back(p.x[i][0]), sb.y.push_back(brook[i] / (D * two_pi * two_pi));
-    sf.x.push_back(p.x[i][0]), sf.y.push_back(sym[i] / (D * two_pi * two_pi));
+    sb.x.push_back(p.x[i][0]), sb.y.push_back(res.value("brookshaw", i) / (D * two_pi * two_pi));
+    sf.x.push_back(p.x[i][0]), sf.y.push_back(res.value("flux_56_58", i) / (D * two_pi * two_pi));
   }
   r.figures.push_back({"laplacian_profile", "SPH Laplacian of prod sin(2 pi x_a) along x (other axes near 1/4)",
                        "x", "lap T / (d (2 pi)^2) (dimensionless)", "linear", "linear", {se, sb, sf}});
