@@ -1,6 +1,6 @@
 """Reading a results folder of sphv (`sphv verify --out DIR` or `sphv sweep`) for the report.
 
-A sweep is the parsed sweep.json (keys as verification/sweep.cpp writes them) plus "_dir", the
+A sweep is the parsed sweep.json (keys as verification/harness/sweep.cpp writes them) plus "_dir", the
 folder that holds it, relative to the results root. The report only renders what the harness
 decided (rows and their outcomes, checks and their kinds); it never re-judges a number."""
 import json

@@ -6,7 +6,7 @@ cd "$(dirname "$0")/.."
 # Warnings are errors here: the tree builds without a warning under -Wall -Wextra -Wpedantic
 # (GCC 12), so a new one fails CI instead of hiding among others.
 export SPHV_WERROR=${SPHV_WERROR:-ON}
-# The sanitizer tests (ASan + UBSan on the input and file code, verification/sanitizer_tests.cmake)
+# The sanitizer tests (ASan + UBSan on the input and file code, verification/tests/sanitizer_tests.cmake)
 # are built and run with the others.
 export SPHV_SANITIZER_TESTS=${SPHV_SANITIZER_TESTS:-ON}
 # Their own folder at -O2: the whole command must stay under 8 minutes on a fresh 2-core machine.

@@ -17,20 +17,20 @@
 #include <unistd.h>
 
 #include "sph/core/isa.hpp"
-#include "verification/allocator.hpp"
-#include "verification/baseline.hpp"
-#include "verification/bench.hpp"
-#include "verification/case.hpp"
-#include "verification/cost.hpp"
-#include "verification/gravity_command.hpp"
-#include "verification/ic.hpp"
-#include "verification/junit.hpp"
-#include "verification/mpi.hpp"
-#include "verification/reason.hpp"
-#include "verification/runner.hpp"
-#include "verification/score.hpp"
+#include "verification/support/allocator.hpp"
+#include "verification/harness/baseline.hpp"
+#include "verification/commands/bench.hpp"
+#include "verification/harness/case.hpp"
+#include "verification/harness/cost.hpp"
+#include "verification/commands/gravity_command.hpp"
+#include "verification/commands/ic.hpp"
+#include "verification/io/junit.hpp"
+#include "verification/support/mpi.hpp"
+#include "verification/harness/reason.hpp"
+#include "verification/commands/runner.hpp"
+#include "verification/commands/score.hpp"
 #include "verification/snapshot/convert_command.hpp"
-#include "verification/sweep.hpp"
+#include "verification/harness/sweep.hpp"
 
 namespace fs = std::filesystem;
 using namespace sphv;
@@ -97,7 +97,7 @@ std::string summary_line(const Result& r) {
   return s + ", verdict: " + r.verdict;
 }
 
-// Test-only hook (verification/tiers_tests.cmake, scripts/test-faults.sh): with
+// Test-only hook (verification/tests/tiers_tests.cmake, scripts/test-faults.sh): with
 // SPHV_TEST_FAULT=crash:CASE@N,hang:CASE@N (any of them; "@N" only at level n = N) `sphv run CASE`
 // kills itself with SIGKILL or hangs, so a test can show the catalogue survives both. Nothing
 // else sets this variable.

@@ -8,8 +8,8 @@
 
 #include "reference/noh.hpp"
 #include "reference/sedov.hpp"
-#include "verification/cases/sedov_errors.hpp"
-#include "verification/sweep.hpp"
+#include "verification/cases/sedov/errors.hpp"
+#include "verification/harness/sweep.hpp"
 
 namespace {
 // One thread (see gates.cpp): results do not depend on the thread count.

@@ -7,9 +7,9 @@
 #include <cmath>
 #include <regex>
 
-#include "verification/baseline.hpp"
-#include "verification/reason.hpp"
-#include "verification/sweep.hpp"
+#include "verification/harness/baseline.hpp"
+#include "verification/harness/reason.hpp"
+#include "verification/harness/sweep.hpp"
 
 namespace {
 

@@ -1,0 +1,319 @@
+// Case `kernel`: normalisation and consistency of each kernel of sph/kernel/kernels.hpp (the
+// chapter's cubic spline (6)-(10) by default; kernel=NAME one of the others, a variant each) and
+// the discrete normalisation condition (20) on lattices, in 1D, 2D and 3D.
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "reference/quadrature.hpp"
+#include "sph/kernel/kernels.hpp"
+#include "verification/harness/case.hpp"
+#include "verification/harness/sweep.hpp"
+
+namespace sphv::kernel_case {
+namespace {
+
+// Surface of the unit sphere in D dimensions: 2, 2 pi, 4 pi.
+constexpr double unit_sphere(int d) { return d == 1 ? 2.0 : d == 2 ? 2.0 * std::numbers::pi : 4.0 * std::numbers::pi; }
+// Volume of the unit ball: 2, pi, 4 pi / 3.
+constexpr double unit_ball(int d) { return unit_sphere(d) / d; }
+
+// |integral of W over its support - 1| by GSL adaptive quadrature in r, with the kernel's
+// breakpoints (its knots) given to the integrator.
+template <template <int> class K, int D>
+double quadrature_error(double h) {
+  std::vector<double> points = {0.0};
+  for (double k : K<D>::knots) points.push_back(k * h);
+  auto f = [h](double r) { return unit_sphere(D) * std::pow(r, D - 1) * K<D>::W(r, h); };
+  return std::abs(reference::integrate(f, points).value - 1.0);
+}
+
+// Adds x to the compensated sum (s, c) (Neumaier): the lattice-sum errors measured reach 1e-13
+// (Wendland C6, 3D, n = 256), where a plain sum of ~4e5 terms carries round-off of ~eps sqrt(N),
+// about 6e-14.
+inline void add(double& s, double& c, double x) {
+  const double t = s + x;
+  c += std::abs(s) >= std::abs(x) ? (s - t) + x : (x - t) + s;
+  s = t;
+}
+
+// Condition (20) at a lattice point of spacing dx with m_j / rho_j = dx^D:
+// |sum_j dx^D W(|r_j|, h) - 1|, summed directly over the lattice (no neighbour search), the -1
+// inside the compensated sum.
+template <template <int> class K, int D>
+double lattice_sum_error(double h, double dx) {
+  using W = K<D>;
+  const int k = static_cast<int>(std::ceil(h / dx));
+  const double v = std::pow(dx, D);
+  double sum = -1.0, c = 0.0;
+  if constexpr (D == 1) {
+    for (int a = -k; a <= k; ++a) add(sum, c, v * W::W(std::abs(a) * dx, h));
+  } else if constexpr (D == 2) {
+    for (int a = -k; a <= k; ++a)
+      for (int b = -k; b <= k; ++b) add(sum, c, v * W::W(dx * std::hypot(a, b), h));
+  } else {
+    for (int a = -k; a <= k; ++a)
+      for (int b = -k; b <= k; ++b)
+        for (int e = -k; e <= k; ++e) add(sum, c, v * W::W(dx * std::sqrt(double(a * a + b * b + e * e)), h));
+  }
+  return std::abs(sum + c);
+}
+
+// The lattice points (spacing dx, one at the origin, itself included) where W(|r_j|, h) > 0: the
+// neighbours of a lattice particle.
+template <template <int> class K, int D>
+double neighbours(double h, double dx) {
+  const int k = static_cast<int>(std::ceil(h / dx));
+  long count = 0;
+  const long side = 2 * k + 1, points = D == 1 ? side : D == 2 ? side * side : side * side * side;
+  for (long idx = 0; idx < points; ++idx) {
+    long rest = idx;
+    double r2 = 0.0;
+    for (int d = 0; d < D; ++d) {
+      const double j = static_cast<double>(rest % side - k);
+      rest /= side;
+      r2 += j * j;
+    }
+    count += K<D>::W(dx * std::sqrt(r2), h) > 0.0;
+  }
+  return static_cast<double>(count);
+}
+
+// Largest |dW/dr - central difference of W| relative to max |dW/dr|, over 0 < r < 1.2 h.
+// Step 1e-5 h: truncation ~ (1e-5)^2 |W'''| / 6 and round-off ~ 1e-16 / 1e-5 both stay < 1e-9.
+template <template <int> class Kt, int D>
+double derivative_error(double h) {
+  using K = Kt<D>;
+  const double d = 1e-5 * h;
+  double worst = 0.0, scale = 0.0;
+  for (int s = 1; s < 1200; ++s) {
+    const double r = s * 1e-3 * h;
+    if (std::any_of(K::knots.begin(), K::knots.end(), [&](double k) { return std::abs(r - k * h) < 2 * d; }))
+      continue;  // where a piece ends
+    worst = std::max(worst, std::abs(K::dWdr(r, h) - (K::W(r + d, h) - K::W(r - d, h)) / (2 * d)));
+    scale = std::max(scale, std::abs(K::dWdr(r, h)));
+  }
+  return worst / scale;
+}
+
+// Largest jump of W (relative to W(0)) and of dW/dr (relative to max |dW/dr|) across the knots,
+// plus any negative value inside or non-zero value outside the support.
+template <template <int> class Kt, int D>
+double shape_violation(double h) {
+  using K = Kt<D>;
+  const double e = 1e-13 * h, w0 = K::W(0.0, h);
+  double g0 = 0.0;
+  for (int s = 0; s <= 1000; ++s) g0 = std::max(g0, std::abs(K::dWdr(s * 1e-3 * h, h)));
+  double v = 0.0;
+  for (double q : K::knots) {
+    v = std::max(v, std::abs(K::W(q * h - e, h) - K::W(q * h + e, h)) / w0);
+    v = std::max(v, std::abs(K::dWdr(q * h - e, h) - K::dWdr(q * h + e, h)) / g0);
+  }
+  for (int s = 0; s <= 2000; ++s) {
+    const double r = s * 1e-3 * h;
+    if (K::W(r, h) < 0.0) v = std::max(v, -K::W(r, h) / w0);
+    if (r > h && K::W(r, h) != 0.0) v = std::max(v, 1.0);
+  }
+  return v;
+}
+
+template <template <int> class K, int D>
+Series kernel_shape(bool derivative) {
+  Series s{std::to_string(D) + "D", {}, {}, "line"};
+  for (int k = 0; k <= 120; ++k) {
+    const double q = k / 100.0;
+    s.x.push_back(q);
+    s.y.push_back(derivative ? K<D>::dWdr(q, 1.0) : K<D>::W(q, 1.0));
+  }
+  return s;
+}
+
+template <template <int> class K, int D>
+Series sum_against_ratio() {
+  Series s{std::to_string(D) + "D", {}, {}, "line"};
+  for (double ratio = 1.2; ratio <= 6.0 + 1e-9; ratio += (D == 3 ? 0.05 : 0.02)) {
+    s.x.push_back(ratio);
+    s.y.push_back(std::max(lattice_sum_error<K, D>(1.0, 1.0 / ratio), 1e-17));
+  }
+  return s;
+}
+
+// The lattice-sum error oscillates with how the knots fall between lattice points (period 2 dx
+// in h for the cubic's h/2). Its envelope, the worst error over [h, h + 2 dx), is what converges
+// cleanly; a single h would give a fit that depends on luck.
+template <template <int> class K, int D>
+double worst_lattice_sum_error(double h, double dx) {
+  double worst = 0.0;
+  for (int k = 0; k < 32; ++k) worst = std::max(worst, lattice_sum_error<K, D>(h + k * dx / 16.0, dx));
+  return worst;
+}
+
+template <template <int> class K>
+Result run_kernel(double h, double dx) {
+  Result r;
+  r.n_particles = 0;
+  r.errors = {{"sum_1d", worst_lattice_sum_error<K, 1>(h, dx)},
+              {"sum_2d", worst_lattice_sum_error<K, 2>(h, dx)},
+              {"sum_3d", worst_lattice_sum_error<K, 3>(h, dx)}};
+  r.extra = {{"kernel", K<1>::name},
+             {"ratio_h_dx", h / dx},
+             {"quadrature_error", {quadrature_error<K, 1>(h), quadrature_error<K, 2>(h), quadrature_error<K, 3>(h)}},
+             {"derivative_error", {derivative_error<K, 1>(h), derivative_error<K, 2>(h), derivative_error<K, 3>(h)}},
+             {"shape_violation", {shape_violation<K, 1>(h), shape_violation<K, 2>(h), shape_violation<K, 3>(h)}},
+             {"neighbours", {neighbours<K, 1>(h, dx), neighbours<K, 2>(h, dx), neighbours<K, 3>(h, dx)}}};
+  const std::string name = K<1>::name;
+  r.figures.push_back({"kernel_W", "Kernel " + name + ", h = 1", "q = r/h", "W(q; h = 1)", "linear", "linear",
+                       {kernel_shape<K, 1>(false), kernel_shape<K, 2>(false), kernel_shape<K, 3>(false)}});
+  r.figures.push_back({"kernel_dW", "Kernel derivative, " + name + ", h = 1", "q = r/h", "dW/dr (h = 1)", "linear",
+                       "linear", {kernel_shape<K, 1>(true), kernel_shape<K, 2>(true), kernel_shape<K, 3>(true)}});
+  r.figures.push_back({"lattice_sum_ratio", "Condition (20) on a lattice against h/dx, " + name,
+                       "support radius / lattice spacing h/dx", "|sum_j m_j/rho_j W_ij - 1|", "linear", "log",
+                       {sum_against_ratio<K, 1>(), sum_against_ratio<K, 2>(), sum_against_ratio<K, 3>()}});
+  return r;
+}
+
+Result run(const Params& p) {
+  const double h = p.real("h"), dx = 1.0 / p.integer("n");
+  Result r;
+  sph::with_kernel_family(p.text("kernel"), [&]<template <int> class K>() { r = run_kernel<K>(h, dx); });
+  return r;
+}
+
+// The order of the lattice-sum error (20) in n at fixed h, per kernel and dimension d. The sum is
+// the trapezoidal rule of W on the lattice; its error is W's Fourier transform at the reciprocal
+// lattice vectors ~ 2 pi n, which decays as fast as W's least smooth place allows: a sphere
+// r = q_k h where the m-th derivative jumps gives |k|^-(m + 1 + (d-1)/2), a factor (1-q)^e at the
+// edge the same with m = e, and a lowest odd power q^p of the innermost piece (W is then not
+// smooth at r = 0) gives |k|^-(d + p). In 1D, 2D, 3D:
+//   cubic (m = 3 at q = 1/2, 1; p = 3):                 4, 4.5, 5
+//   quartic (m = 4 at 1/5, 3/5, 1; even at 0):          5, 5.5, 6
+//   quintic (m = 5 at 1/3, 2/3, 1; p = 5):              6, 6.5, 7
+//   Wendland C2 (1D: e = 3, p = 3; 2D, 3D: e = 4, p = 3): 4, 5 (the origin), 6
+//   Wendland C4 (1D: e = 5, p = 5; 2D, 3D: e = 6, p = 5): 6, 7 (the origin), 8
+//   Wendland C6 (1D: e = 7, p = 7; 2D, 3D: e = 8, p = 7): 8, 9 (the origin), 10
+// Fits of an independent evaluation (numpy, the same error definition) on the quick levels
+// n = 16..128, 1D, 2D, 3D: cubic 3.57 +- 0.21, 3.95 +- 0.28, 4.53 +- 0.18; quartic 3.80 +- 0.39,
+// 4.32 +- 0.47, 5.32 +- 0.49; quintic 5.70 +- 0.49, 6.72 +- 0.35, 7.44 +- 0.34; Wendland C2 3.83,
+// 5.04, 5.96, C4 5.97, 6.89, 7.90, C6 7.87, 8.89, 9.89 (+- 0.03-0.10); on 16..256 quartic 4.12,
+// 4.58, 5.43, the others within 0.25 of their quick fits. The B-splines are pre-asymptotic (at
+// n = 16, h/dx = 2.2, the quartic's knot at h/5 lies 0.44 dx from the centre; its local slopes in
+// 1D are 3.6, 2.7, 5.5, 4.8, 4.9 over 16..512); the Wendland functions, one piece each, are not.
+struct Theory {
+  double order[3];
+  double band;  // the measured deficits above plus a margin
+  const char* why;
+  // The bound err n^p <= C at a sweep's finest level (every tier's), p below the order: C is 1.5
+  // times the largest err n^p the independent evaluation gives on n = 64..512 (64..256 for C6).
+  double p[3], C[3];
+};
+const char* const why_pieces = "trapezoidal lattice sum of a piecewise polynomial: the jump of its m-th derivative "
+                               "on the spheres r = q_k h decays as |k|^-(m + 1 + (d-1)/2) in Fourier space";
+const char* const why_wendland = "trapezoidal lattice sum of a one-piece Wendland function: its Fourier transform "
+                                 "decays as |k|^-(e + 1 + (d-1)/2) from (1-q)^e at the edge and as |k|^-(d + p) from "
+                                 "the odd power q^p at the origin, the slower of the two";
+const std::map<std::string, Theory> theory = {
+    // Band 0.6: the largest deficit measured, 0.55 (2D on 16..128), plus 0.05. Its bound: err n^p
+    // measured at n = 128 and 256: 1D (p 3.5) 60.8, 57.5; 2D (p 4) 257, 209; 3D (p 4.5) 1068, 802;
+    // C = 1.5 times the larger (the error oscillates with n).
+    {"cubic_spline", {{4.0, 4.5, 5.0}, 0.6, why_pieces, {3.5, 4.0, 4.5}, {92.0, 385.0, 1600.0}}},
+    // Band 0.8: with the harness's 2 se (0.78-0.98 on the quick levels) it holds the measured
+    // deficits 1.20 and 1.18 (1D, 2D) with 0.38 to spare; on 16..256 0.88 and 0.92 against 0.8
+    // plus 2 se of 0.58 and 0.62. Bounds at p = order - band: err n^p at 64..512: 1D 472 .. 82.6,
+    // 2D 2020 .. 384, 3D 6930 .. 1280.
+    {"quartic_spline", {{5.0, 5.5, 6.0}, 0.8, why_pieces, {4.2, 4.7, 5.2}, {708.0, 3030.0, 10400.0}}},
+    // Band 0.8: the largest measured difference is 0.44 (3D, 7.44 against 7). err n^p at 64..512:
+    // 1D 2860 .. 1510, 2D 11100 .. 6040, 3D 34900, 37800, 41400, 24400.
+    {"quintic_spline", {{6.0, 6.5, 7.0}, 0.8, why_pieces, {5.2, 5.7, 6.2}, {4290.0, 16700.0, 62100.0}}},
+    // Band 0.5: the largest measured deficit is 0.17 (C2 1D, 3.83 against 4), three times over.
+    // err n^p at 64..512 fall with n (1D 80.4 .. 29.7, 2D 3250 .. 1210, 3D 51800 .. 21500; C4 1D
+    // 11800 .. 5360, 2D 9.8e5 .. 3.4e5, 3D 1.97e7 .. 7.2e6; C6 on 64..256 1D 5.8e6 .. 3.1e6, 2D
+    // 5.0e8 .. 2.6e8, 3D 1.24e10 .. 6.3e9).
+    {"wendland_c2", {{4.0, 5.0, 6.0}, 0.5, why_wendland, {3.5, 4.5, 5.5}, {121.0, 4880.0, 77700.0}}},
+    {"wendland_c4", {{6.0, 7.0, 8.0}, 0.5, why_wendland, {5.5, 6.5, 7.5}, {17700.0, 1.47e6, 2.95e7}}},
+    {"wendland_c6", {{8.0, 9.0, 10.0}, 0.5, why_wendland, {7.5, 8.5, 9.5}, {8.69e6, 7.54e8, 1.86e10}}},
+};
+
+OrderClaims orders(const Params& p) {
+  const Theory& t = theory.at(p.text("kernel"));
+  OrderClaims c;
+  for (int d = 0; d < 3; ++d) c["sum_" + std::to_string(d + 1) + "d"] = {t.order[d], t.band, t.why, {}};
+  return c;
+}
+
+std::vector<Check> gates(const Sweep& s) {
+  std::vector<Check> c;
+  const auto& fine = s.runs.back();
+  const auto& x = fine.extra;
+  for (int d = 0; d < 3; ++d) {
+    const std::string dim = std::to_string(d + 1) + "d";
+    // The issue's bound; GSL's QAGP reaches ~1e-15 on these piecewise polynomials (split at the knots).
+    c.push_back({"quadrature_" + dim, x["quadrature_error"][d], 0.0, 1e-10, "issue 2: |int W - 1| <= 1e-10"});
+    // Truncation + round-off estimate of the central difference, see derivative_error.
+    c.push_back({"derivative_" + dim, x["derivative_error"][d], 0.0, 1e-8, "central difference, step 1e-5 h"});
+    // Every kernel is at least C^2: jumps across its knots are round-off only (~1e-12 at e = 1e-13 h).
+    c.push_back({"shape_" + dim, x["shape_violation"][d], 0.0, 1e-9, "W >= 0, W = 0 beyond h, W and dW/dr continuous"});
+    // The lattice points with W > 0 are those with r < h (support h, not 2h): their unit cells
+    // cover the ball of radius R - sqrt(d)/2 and lie inside that of R + sqrt(d)/2 (R = h/dx, in
+    // spacings), so omega_d (R - sqrt(d)/2)^d <= N <= omega_d (R + sqrt(d)/2)^d.
+    const double R = x["ratio_h_dx"].get<double>(), half = std::sqrt(d + 1.0) / 2.0;
+    c.push_back({"neighbours_" + dim, x["neighbours"][d], unit_ball(d + 1) * std::pow(R - half, d + 1),
+                 unit_ball(d + 1) * std::pow(R + half, d + 1),
+                 "lattice points with W > 0 between the balls of radius h/dx -+ sqrt(d)/2 (support radius h)"});
+  }
+  // The lattice-sum error at the finest level, as err n^p <= C (Theory above).
+  const Theory& t = theory.at(x["kernel"].get<std::string>());
+  const double n = fine.params["n"].get<double>();
+  for (int d = 0; d < 3; ++d) {
+    const std::string e = "sum_" + std::to_string(d + 1) + "d";
+    c.push_back({e + "_times_n^p", fine.errors.at(e) * std::pow(n, t.p[d]), 0.0, t.C[d],
+                 "lattice-sum error at the finest level, p = " + shortest(t.p[d]) +
+                     ", C 1.5 times the largest err n^p measured (operators/kernel.cpp, Theory)",
+                 Check::Kind::verification, e});
+  }
+  return c;
+}
+
+std::vector<std::vector<std::string>> variants() {
+  std::vector<std::vector<std::string>> v = {{}};
+  for (const auto& k : sph::kernel_names())
+    if (k != "cubic_spline") v.push_back({"kernel=" + k});
+  return v;
+}
+
+// CPU (user, one thread): quick 0.03 s, standard 0.10 s a kernel; the 3D sum grows as n^3, so
+// full's n = 512 adds ~0.6 s and 1024 ~5 s (estimated).
+const Levels cubic_levels = {.quick = {16, 32, 64, 128}, .standard = {16, 32, 64, 128, 256},
+                             .full = {16, 32, 64, 128, 256, 512, 1024}};
+
+const Registration reg{Case{
+    .name = "kernel",
+    .summary = "kernels (cubic spline; kernel=NAME): normalisation by quadrature, W' consistency, lattice sums (20)",
+    .n_counts = "lattice points per unit length at fixed support radius h (h/dx = n h)",
+    .tags = {"gate", "sweep"},
+    .params = {integer_param("n", 32, "lattice points per unit length"),
+               real_param("h", 0.137, "support radius (not a multiple of dx: 1D sums are exact then)", 0.0),
+               choice_param("kernel", "cubic_spline", "the kernel (sph/kernel/kernels.hpp)", sph::kernel_names())},
+    .levels = cubic_levels,
+    .orders = orders,
+    .error_defs = {{"sum_1d", "max over 32 shifts of h within [h, h + 2 dx) of |dx sum_j W(x_j, h) - 1|, 1D lattice (20)"},
+                   {"sum_2d", "max over 32 shifts of h within [h, h + 2 dx) of |dx^2 sum_j W(x_j, h) - 1|, 2D lattice (20)"},
+                   {"sum_3d", "max over 32 shifts of h within [h, h + 2 dx) of |dx^3 sum_j W(x_j, h) - 1|, 3D lattice (20)"}},
+    .variants = variants(),
+    // The higher-order kernels' errors reach round-off beyond n = 512 (Wendland C6 1e-14 to 1e-15
+    // at 512; C4 3D 3.5e-14), where the fit would level off: full stops at 512, at 256 for C6.
+    .levels_for = [](const Params& p) {
+      const std::string k = p.text("kernel");
+      Levels l = cubic_levels;
+      if (k == "wendland_c6") l.full = {16, 32, 64, 128, 256};
+      else if (k != "cubic_spline") l.full = {16, 32, 64, 128, 256, 512};
+      return l;
+    },
+    .run = run,
+    .gates = gates,
+}};
+
+}  // namespace
+}  // namespace sphv::kernel_case

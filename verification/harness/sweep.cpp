@@ -1,0 +1,318 @@
+#include "verification/harness/sweep.hpp"
+
+#include "verification/harness/baseline.hpp"
+#include "verification/harness/reason.hpp"
+
+#include <gsl/gsl_fit.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <set>
+
+namespace sphv {
+
+namespace {
+constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+
+// Order checks of the claims: the observed order within expected +- (band + 2 se), and se at
+// most the band (a fit whose uncertainty exceeds the band cannot tell the claimed order from one
+// outside it, and 2 se would widen the window to more than three bands); se is unknown (taken
+// as 0) with two levels, where the fit is exact. A known failure's check passes
+// while the order stays outside expected +- band: a curve that levels off fits a power law
+// badly, and the standard error of that poor fit must not count as the claim coming true.
+std::vector<Check> order_checks(const Sweep& s) {
+  std::vector<Check> c;
+  for (const auto& [name, claim] : s.claims) {
+    const auto o = s.observed_order.find(name);
+    if (!claim.claimed() || o == s.observed_order.end() || !std::isfinite(o->second.p)) continue;
+    const double width = claim.band + (std::isfinite(o->second.se) && !claim.known_failure() ? 2.0 * o->second.se : 0.0);
+    if (claim.known_failure())
+      c.push_back({"known_failure_order_" + name, o->second.p, claim.expected - width, claim.expected + width,
+                   "known failure (the order stays outside its band): " + fill_reason(claim.why, s) +
+                       "; the variant [" + claim.experiment + "] converges",
+                   Check::Kind::known_failure, name});
+    else {
+      c.push_back({"order_" + name, o->second.p, claim.expected - width, claim.expected + width, claim.why,
+                   Check::Kind::verification, name});
+      if (std::isfinite(o->second.se))
+        c.push_back({"order_resolved_" + name, o->second.se, 0.0, claim.band,
+                     "the order fit's standard error at most the claim's band (the levels determine the order)",
+                     Check::Kind::verification, name});
+    }
+  }
+  return c;
+}
+
+std::string failed_names(const std::vector<const Check*>& checks) {
+  std::string s;
+  for (const Check* c : checks)
+    if (!c->pass()) s += (s.empty() ? "" : ", ") + c->name;
+  return s;
+}
+
+// The outcome of every error the runs report (and every claimed one).
+std::vector<Row> rows_of(const Sweep& s) {
+  std::set<std::string> names;
+  for (const auto& r : s.runs)
+    for (const auto& [k, v] : r.errors) names.insert(k);
+  std::vector<Row> rows;
+  for (const auto& e : names) {
+    Row row{e, nan, nan, nan, nan, 0.0, "fail", ""};
+    if (!s.runs.empty() && s.runs.back().errors.count(e)) row.fine_value = s.runs.back().errors.at(e);
+    if (auto o = s.observed_order.find(e); o != s.observed_order.end()) row.observed = o->second.p, row.se = o->second.se;
+    std::vector<const Check*> on;
+    for (const auto& c : s.checks)
+      if (c.error == e) on.push_back(&c);
+    const auto order_check = std::find_if(on.begin(), on.end(), [&](const Check* c) {
+      return c->name == "order_" + e || c->name == "known_failure_order_" + e;
+    });
+    const bool ordered = order_check != on.end();
+    const bool bounded = std::any_of(on.begin(), on.end(), [&](const Check* c) {
+      return c->kind == Check::Kind::verification && c->name != "order_" + e && c->name != "order_resolved_" + e;
+    });
+    const auto reporting = std::count_if(s.runs.begin(), s.runs.end(), [&](const Result& r) { return r.errors.count(e) > 0; });
+    const auto claim = s.claims.find(e);
+    if (claim == s.claims.end()) {
+      row.why = "the case states no order claim for this error";
+      rows.push_back(std::move(row));
+      continue;
+    }
+    if (claim->second.claimed()) row.expected = claim->second.expected, row.band = claim->second.band;
+    if (ordered && (*order_check)->kind == Check::Kind::known_failure && !(*order_check)->pass()) {
+      row.why = "known failure now passes: remove the mark (observed order inside its band)";
+    } else if (const std::string f = failed_names(on); !f.empty()) {
+      row.why = "failed: " + f;
+    } else if (!claim->second.claimed()) {
+      row.outcome = "no order claimed";
+      row.why = fill_reason(claim->second.why, s);
+    } else if (ordered && bounded) {
+      const bool known = (*order_check)->kind == Check::Kind::known_failure;
+      row.outcome = known ? "known failure" : "verified";
+      row.why = known ? fill_reason(claim->second.why, s) + "; the variant [" + claim->second.experiment + "] converges"
+                      : claim->second.why;
+    } else if (!ordered && reporting < 2 && bounded) {
+      row.outcome = "no order claimed";
+      row.why = s.levels.size() < 2 ? "one level in this sweep: the order is not observable; its bound held"
+                                    : "reported at one level of this sweep only: the order is not observable; its bound held";
+    } else {
+      row.why = !ordered ? "order claimed but not observed at every level" : "order claimed but the error has no bound";
+    }
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
+}  // namespace
+
+bool Sweep::passed() const {
+  for (const auto& c : checks)
+    if (!c.pass()) return false;
+  for (const auto& r : rows)
+    if (r.outcome == "fail") return false;
+  return true;
+}
+
+std::string Sweep::variant() const {
+  if (settings.empty()) return "default";
+  std::string s;
+  for (const auto& kv : settings) s += (s.empty() ? "" : ",") + kv;
+  return s;
+}
+
+Order observed_order(const std::vector<double>& n, const std::vector<double>& err) {
+  std::vector<double> x, y;
+  for (std::size_t k = 0; k < n.size() && k < err.size(); ++k)
+    if (err[k] > 0.0 && std::isfinite(err[k])) {
+      x.push_back(std::log(n[k]));
+      y.push_back(std::log(err[k]));
+    }
+  if (x.size() < 2) return {nan, nan};
+  double c0, c1, cov00, cov01, cov11, sumsq;
+  gsl_fit_linear(x.data(), 1, y.data(), 1, x.size(), &c0, &c1, &cov00, &cov01, &cov11, &sumsq);
+  return {-c1, x.size() > 2 ? std::sqrt(cov11) : nan};
+}
+
+std::optional<Gci> grid_convergence_index(const std::vector<double>& n, const std::vector<double>& f,
+                                          double claimed_order) {
+  const std::size_t k = n.size();
+  if (k < 2 || f.size() != k) return std::nullopt;
+  const double f1 = f[k - 1], f2 = f[k - 2];  // finest, next
+  const double r = n[k - 1] / n[k - 2];
+  if (!(r > 1.0) || !std::isfinite(f1) || f1 == 0.0) return std::nullopt;
+  Gci g{f1, claimed_order, r, 3.0, 0.0};
+  if (k >= 3) {
+    const double f3 = f[k - 3], r23 = n[k - 2] / n[k - 3];
+    const double e21 = f1 - f2, e32 = f2 - f3;
+    // Three levels at a constant ratio give the order directly (Roache 1994).
+    if (std::abs(r23 - r) < 1e-9 * r && e21 != 0.0 && e32 != 0.0 && e32 / e21 > 0.0) {
+      g.order = std::log(e32 / e21) / std::log(r);
+      g.safety = 1.25;
+    }
+  }
+  if (!(g.order > 0.0) || !std::isfinite(g.order)) return std::nullopt;
+  g.gci = g.safety * std::abs((f1 - f2) / f1) / (std::pow(r, g.order) - 1.0);
+  return g;
+}
+
+Sweep summarise(const Case& c, const std::vector<std::string>& settings, const std::vector<long>& levels,
+                std::vector<Result> runs, const std::string& tier) {
+  Sweep s;
+  s.case_name = c.name;
+  s.summary = c.summary;
+  s.n_counts = c.n_counts;
+  s.error_defs = c.error_defs;
+  s.tier = tier;
+  s.levels = levels;
+  const Params base = c.parse(settings);
+  s.settings = base.non_defaults();
+  if (c.orders) s.claims = c.orders(base);
+  s.runs = std::move(runs);
+  for (const auto& r : s.runs) s.wall_time_s += r.wall_time_s;
+
+  std::vector<double> n(levels.begin(), levels.end());
+  // An error is fitted over the levels that report it (a shock front found only from some n on),
+  // from two levels up; functionals need every level (the GCI's constant ratio).
+  std::map<std::string, std::vector<double>> err_n, errs, funcs;
+  for (std::size_t k = 0; k < s.runs.size() && k < n.size(); ++k) {
+    for (const auto& [key, v] : s.runs[k].errors) err_n[key].push_back(n[k]), errs[key].push_back(v);
+    for (const auto& [key, v] : s.runs[k].functionals) funcs[key].push_back(v);
+  }
+  for (const auto& [k, v] : errs)
+    if (v.size() >= 2) s.observed_order[k] = observed_order(err_n[k], v);
+  for (const auto& [k, v] : funcs) {
+    const auto claim = s.claims.find(k);
+    if (v.size() == n.size())
+      if (auto g = grid_convergence_index(n, v, claim == s.claims.end() ? nan : claim->second.expected)) s.gci[k] = *g;
+  }
+  // A run that crashed or timed out lacks its errors: gates that cannot be evaluated fail the sweep
+  // (the verdict check below names the run) instead of ending a whole catalogue.
+  try {
+    if (c.gates) s.checks = c.gates(s);
+  } catch (const std::exception& e) {
+    s.checks = {{"gates_evaluated", 0.0, 1.0, 1.0, std::string("the gates could not be evaluated: ") + e.what()}};
+  }
+  for (auto& o : order_checks(s)) s.checks.push_back(std::move(o));
+  for (std::size_t k = 0; k < s.runs.size(); ++k)
+    if (!c.verdict_expected(base, s.runs[k].verdict))
+      s.checks.push_back({"expected_verdict_n" + std::to_string(levels[k]), 0.0, 1.0, 1.0,
+                          "the run ended '" + s.runs[k].verdict + "' where the case expects it to complete"});
+  for (auto& d : drift_checks(s)) s.checks.push_back(std::move(d));
+  s.rows = rows_of(s);
+  return s;
+}
+
+Sweep run_sweep(const Case& c, const std::vector<long>& levels, const std::vector<std::string>& settings,
+                const std::optional<std::filesystem::path>& out, const RunOptions& opt) {
+  std::vector<Point> points;
+  for (long n : levels) points.push_back({settings, n, out ? *out / ("n" + std::to_string(n)) : ""});
+  Sweep s = summarise(c, settings, levels, run_points(c, points, opt));
+  if (out) write_atomically(*out / "sweep.json", to_json(s).dump(1) + "\n");
+  return s;
+}
+
+Sweep run_tier(const Case& c, Tier t, const std::vector<std::string>& settings,
+               const std::optional<std::filesystem::path>& out, const RunOptions& opt) {
+  const auto levels = c.tier_levels(settings, t);
+  std::vector<Point> points;
+  for (long n : levels) points.push_back({settings, n, out ? *out / ("n" + std::to_string(n)) : ""});
+  Sweep s = summarise(c, settings, levels, run_points(c, points, opt), to_string(t));
+  if (out) write_atomically(*out / "sweep.json", to_json(s).dump(1) + "\n");
+  return s;
+}
+
+std::vector<std::vector<std::string>> expand_variants(const std::vector<std::string>& base,
+                                                      const std::vector<std::string>& vary) {
+  std::vector<std::vector<std::string>> out = {base};
+  for (const auto& kv : vary) {
+    const auto eq = kv.find('=');
+    if (eq == std::string::npos || eq == 0 || eq + 1 == kv.size())
+      throw InputError("malformed --vary '" + kv + "': expected key=a,b,c");
+    std::vector<std::vector<std::string>> next;
+    for (const auto& v : out) {
+      std::size_t from = eq + 1;
+      while (from <= kv.size()) {
+        const auto comma = std::min(kv.find(',', from), kv.size());
+        auto w = v;
+        w.push_back(kv.substr(0, eq + 1) + kv.substr(from, comma - from));
+        next.push_back(std::move(w));
+        from = comma + 1;
+      }
+    }
+    out = std::move(next);
+  }
+  return out;
+}
+
+std::vector<SweepPlan> plan_sweeps(const Case& c, Tier t, const std::vector<long>& levels,
+                                   const std::vector<std::vector<std::string>>& variants,
+                                   const std::filesystem::path& out) {
+  std::vector<SweepPlan> plans;
+  for (const auto& v : variants) {
+    const Sweep label{.settings = c.parse(v).non_defaults()};
+    plans.push_back({&c, v, levels.empty() ? c.tier_levels(v, t) : levels,
+                     variants.size() == 1 ? out : out / label.variant(), levels.empty() ? to_string(t) : ""});
+  }
+  return plans;
+}
+
+std::vector<Sweep> run_plans(const std::vector<SweepPlan>& plans, const RunOptions& opt) {
+  // Progress reports each case of a catalogue, or each point of a single case's sweeps.
+  const bool one_case = std::all_of(plans.begin(), plans.end(), [&](const SweepPlan& p) { return p.c == plans[0].c; });
+  std::vector<Task> tasks;
+  for (const auto& p : plans)
+    for (long n : p.levels) {
+      std::string group = p.c->name;
+      if (one_case) {
+        group += " n=" + std::to_string(n);
+        for (const auto& s : p.settings) group += " " + s;
+      }
+      tasks.push_back({p.c, {p.settings, n, p.dir / ("n" + std::to_string(n))}, group});
+    }
+  std::vector<Result> results = run_points(tasks, opt);
+  std::vector<Sweep> sweeps;
+  if (results.empty()) return sweeps;  // an MPI rank other than 0
+  auto it = results.begin();
+  for (const auto& p : plans) {
+    std::vector<Result> runs(it, it + p.levels.size());
+    it += p.levels.size();
+    sweeps.push_back(summarise(*p.c, p.settings, p.levels, std::move(runs), p.tier));
+    write_atomically(p.dir / "sweep.json", to_json(sweeps.back()).dump(1) + "\n");
+  }
+  return sweeps;
+}
+
+std::vector<Sweep> run_sweeps(const Case& c, Tier t, const std::vector<long>& levels,
+                              const std::vector<std::vector<std::string>>& variants,
+                              const std::filesystem::path& out, const RunOptions& opt) {
+  return run_plans(plan_sweeps(c, t, levels, variants, out), opt);
+}
+
+nlohmann::json to_json(const Sweep& s) {
+  auto num = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); };
+  nlohmann::json runs = nlohmann::json::array(), order = nlohmann::json::object(), se = nlohmann::json::object(),
+                 claims = nlohmann::json::object(), gci = nlohmann::json::object(),
+                 checks = nlohmann::json::array(), rows = nlohmann::json::array();
+  for (const auto& r : s.runs) runs.push_back(to_json(r));
+  for (const auto& [k, v] : s.observed_order) order[k] = num(v.p), se[k] = num(v.se);
+  for (const auto& [k, v] : s.claims) {
+    claims[k] = {{"expected", num(v.expected)}, {"band", v.band}, {"why", fill_reason(v.why, s)}};
+    if (v.known_failure()) claims[k]["experiment"] = v.experiment;
+  }
+  for (const auto& [k, g] : s.gci)
+    gci[k] = {{"fine_value", num(g.fine_value)}, {"order", num(g.order)}, {"ratio", g.ratio},
+              {"Fs", g.safety}, {"gci", num(g.gci)}};
+  for (const auto& c : s.checks)
+    checks.push_back({{"name", c.name}, {"value", num(c.value)}, {"lo", num(c.lo)}, {"hi", num(c.hi)},
+                      {"why", c.why}, {"pass", c.pass()}, {"kind", to_string(c.kind)}, {"error", c.error}});
+  for (const auto& r : s.rows)
+    rows.push_back({{"error", r.error}, {"fine_value", num(r.fine_value)}, {"observed", num(r.observed)},
+                    {"se", num(r.se)}, {"expected", num(r.expected)}, {"band", r.band},
+                    {"outcome", r.outcome}, {"why", r.why}});
+  return {{"case", s.case_name}, {"summary", s.summary}, {"n_counts", s.n_counts}, {"variant", s.variant()},
+          {"settings", s.settings}, {"tier", s.tier}, {"levels", s.levels}, {"runs", runs},
+          {"observed_order", order}, {"order_se", se}, {"claims", claims}, {"error_defs", s.error_defs},
+          {"gci", gci}, {"checks", checks}, {"rows", rows}, {"passed", s.passed()},
+          {"wall_time_s", s.wall_time_s}};
+}
+
+}  // namespace sphv
