@@ -13,22 +13,13 @@
 //   turn; at a fixed neighbour number E0 does not fall with h, so the noise, and the velocity
 //   error it drives, does not converge at fixed hfact. Wider kernels with more neighbours lower E0
 //   (Wendland kernels do so without the pairing instability); the floor is then reached later.
-// Measured (square lattice, t = 1, C = 0.3, n = 16, 32, 64; L1_v):
-//   cubic, hfact 2.4, alpha 1:            0.257, 0.190, 0.169 (local orders 0.44, 0.17; 0.130 at
-//                                         n = 128, 0.37): the viscosity halves the vortex's peak
-//                                         at n = 64 and the E0 noise keeps the error from falling;
-//   cubic, hfact 2.4, alpha 0.1:          0.215, 0.141, 0.118 (0.61, 0.26): less viscosity, the
-//                                         same E0 floor (mean |v_r| 0.046-0.060, flat);
-//   Wendland C4, hfact 4.5, alpha 0.1:    0.172, 0.103, 0.057 (0.74, 0.85): the viscosity's first
-//                                         order, mean |v_r| 0.023, 0.020, 0.015 (a fifth of L1_v);
-//   Wendland C4, hfact 4.5, alpha 1:      0.279, 0.232, 0.170 (0.27, 0.45): alpha c_s h with h
-//                                         twice the cubic's smears the vortex far out of the
-//                                         asymptotic range at these n (not a catalogue variant);
-//   cubic or Wendland C4 without viscosity: the E0 noise grows unchecked (mean |v_r| 0.32 at
-//                                         cubic n = 32; Wendland 0.12, 0.18, 0.35, L1_v rising).
-// So the default (cubic, alpha 1) and the cubic at alpha 0.1 are known failures of the first-order
-// claim, and the Wendland C4 kernel at hfact 4.5 (64 neighbours) with alpha 0.1 is the experiment
-// that converges at first order over the levels run.
+// The default (cubic spline, hfact 2.4, alpha 1) and the cubic at alpha 0.1 are therefore known
+// failures of the first-order claim: the viscosity smears the vortex and the E0 noise keeps the
+// error from falling. Without viscosity the E0 noise grows unchecked. The Wendland C4 kernel at
+// hfact 4.5 (64 neighbours) with alpha 0.1 is the experiment that converges at first order over
+// the levels run; alpha 1 at that hfact (h twice the cubic's) smears the vortex far out of the
+// asymptotic range and is not a catalogue variant. The measured series per variant:
+// docs/cases/gresho.md; the current numbers: the report's page of the case.
 #include <cmath>
 #include <string>
 
@@ -83,10 +74,9 @@ void validate(const Params& p) {
 
 // The experiment: the catalogue variant that converges (Wendland C4, a wider support, weak viscosity).
 const char* const converging = "alpha=0.1,hfact=4.5,kernel=wendland_c4";
-// The kernel comparison (report): every kernel at the experiment's hfact and alpha. Measured (n =
-// 16, 32, 64): Wendland C2 0.168, 0.100, 0.057; C6 0.172, 0.109, 0.058; quintic 0.170, 0.110,
-// 0.060; cubic 0.175, 0.111, 0.100: the cubic's many neighbours pair (Dehnen & Aly 2012), and its
-// error stalls where the others keep the first order.
+// The kernel comparison (report): every kernel at the experiment's hfact and alpha. The cubic's
+// many neighbours pair (Dehnen & Aly 2012), and its error stalls where the others keep the first
+// order (docs/cases/gresho.md).
 bool wide(const Params& p) { return p.real("hfact") == 4.5 && p.real("alpha") == 0.1; }
 bool converges(const Params& p) { return wide(p) && p.text("kernel") != "cubic_spline"; }
 
@@ -152,12 +142,10 @@ std::vector<Check> gates(const Sweep& s) {
   });
 }
 
-// Levels: n = 16 resolves the vortex's radius 0.4 with 6.4 spacings; the converging variant's
-// n = 64 costs about 13 s of CPU on this machine, n = 128 eight times that (full tier only). The
-// variants at alpha 0.1 are gated on 24, 48, where their local orders lie clear of the band's
-// edges: the cubic at hfact 2.4, L1_v 0.179, 0.124 (order 0.54); at hfact 4.5 the cubic 0.139,
-// 0.106 (0.39), Wendland C2, C4, C6 and the quintic 0.84, 0.82, 0.80, 0.84 (from 16 to 32 the
-// quintic's 0.63 and the cubic's 0.66 sit at the edge, before the cubic pairs).
+// Levels: n = 16 resolves the vortex's radius 0.4 with 6.4 spacings; n = 128 costs eight times
+// n = 64 (full tier only). The variants at alpha 0.1 run the quick tier on 24, 48, where their
+// local orders lie clear of the band's edges (from 16 to 32 the quintic's and the cubic's sit at
+// the edge, before the cubic pairs; docs/cases/gresho.md).
 const Levels levels = {.quick = {16, 32}, .standard = {16, 32, 64}, .full = {16, 32, 64, 128}};
 
 const Registration reg{Case{
