@@ -5,19 +5,17 @@
 // reference: reference/sound_wave (the linear travelling wave, exact to first order in A).
 //
 // Amplitude A = 3e-8. The reference neglects the wave's steepening, of relative size
-// (gamma + 1)/2 A k c_s t = 8.4 A after a period (reference::AcousticWave::nonlinear_error): at
-// A = 1e-6 it added 3.6e-6 to L1_v at 1D n = 64 (C = 0.3: 2.45e-5 against 2.09e-5 at A <= 1e-7).
-// Round-off bounds A from below: the velocity's round-off is ~1e-13 of c_s at n = 256 (L1_v
-// 3.8e-5 at A = 1e-8 there), so the 1D levels stop at n = 128. At 3e-8 the estimate, 2.5e-7, is
-// below a tenth of every level's L1_v (a gate at each level). validate refuses an A whose
-// estimate exceeds 1 % of the amplitude at t_end.
+// (gamma + 1)/2 A k c_s t = 8.4 A after a period (reference::AcousticWave::nonlinear_error), so A
+// must be small; round-off bounds it from below (the velocity's round-off is ~1e-13 of c_s and
+// overtakes the error beyond n = 128 in 1D, so the 1D levels stop there). At 3e-8 the estimate,
+// 2.5e-7, is below a tenth of every level's L1_v (a gate at each level). validate refuses an A
+// whose estimate exceeds 1 % of the amplitude at t_end.
 //
 // Smoothing length fixed (hmode=fixed) at the (50) value of the initial state: the iteration of
 // (50) after every step stops at a relative change of 1e-3 in h, a density noise ~1e-3 far above
-// the wave (iterate50, 1D n = 128: |v| up to 200 A c_s, L1_v = 76). Courant number C = 0.1: at
-// the hydro cases' 0.3 the leapfrog's phase error cancels most of the kernel's in 1D (L1_v 8.7e-5
-// at n = 32 against 2.3e-3 at C = 0.1), and an order measured on a cancellation is not the
-// scheme's; at 0.1 the spatial error dominates (local orders 2.01, 2.00 in 1D, 1.98, 1.98 in 3D).
+// the wave. Courant number C = 0.1: at the hydro cases' 0.3 the leapfrog's phase error cancels
+// most of the kernel's in 1D, and an order measured on a cancellation is not the scheme's; at 0.1
+// the spatial error dominates.
 //
 // Without viscosity (alpha = 0, the default here) the scheme is second order in h at fixed h/dx
 // for a smooth flow, with one exception: on a cubic lattice the linearised pressure force carries
@@ -29,21 +27,20 @@
 // 2D at 2.4 (1.048) the floor holds L1_v at a few per cent: known failures, the measured phase
 // speed gated against the lattice prediction. In 2D the floor has a zero near h/dx = 2.7515; (50)
 // iterated to its 1e-3 tolerance lands at h/dx = 2.751446 from hfact = 2.7536 at every n (a
-// lattice), where the floor is 1 + 8.6e-6: that variant verifies order 2 in 2D (L1_v 1.73e-2,
-// 7.63e-3, 4.37e-3 at n = 32, 48, 64; local orders 2.01, 1.94). Without viscosity the square
-// lattice's transverse modes grow from round-off (max |v_y| 6e-3 of A c_s at n = 64; at n = 96
-// they reach 91 and swamp the wave), so its levels stop at 64.
+// lattice), where the floor is 1 + 8.6e-6: that variant verifies order 2 in 2D. Without viscosity
+// the square lattice's transverse modes grow from round-off and swamp the wave beyond n = 64, so
+// its levels stop at 64.
 // The kernel comparison (report) runs in 1D at h/dx = 6, where the cubic, the quintic and
-// Wendland C6 have floors below 1e-4 (1 - 4e-6, 1, 1 - 8.2e-5) and verify order 2 (L1_v 8.48e-2,
-// 2.07e-2, 5.15e-3; 6.05e-2, 1.49e-2, 3.70e-3; 5.59e-2, 1.40e-2, 3.72e-3 at n = 32, 64, 128).
-// The other three kernels have no common h/dx without a floor here (at 6: quartic 0.99591,
-// Wendland C2 0.95846, C4 1.00156; at 2, every kernel but the cubic is 10-35 % off), and a floor
-// of the smoothing error's size cancels part of it (C4 at 6: local orders 2.5, 2.7), which the
-// floor gates below do not model: they are not variants.
+// Wendland C6 have floors below 1e-4 (1 - 4e-6, 1, 1 - 8.2e-5) and verify order 2. The other three
+// kernels have no common h/dx without a floor here (at 6: quartic 0.99591, Wendland C2 0.95846, C4
+// 1.00156; at 2, every kernel but the cubic is 10-35 % off), and a floor of the smoothing error's
+// size cancels part of it, which the floor gates below do not model: they are not variants.
 // With the default viscosity (alpha = 1, beta = 2) the wave is damped at the rate nu k^2 / 4,
 // nu ~ alpha c_s h, that the continuum limit of (45) predicts (sound_wave/errors.hpp derives it):
 // first order in h, the price of the viscosity in a smooth flow; the measured rate converges to
 // the prediction at first order.
+// The measured series behind these statements: docs/cases/sound_wave.md; the current numbers: the
+// report's page of the case.
 #include <cmath>
 #include <string>
 
@@ -135,8 +132,7 @@ bool floored(const Params& p) {
 // The errors at the coarsest quick level of each catalogue variant (measured at A = 3e-8,
 // C = 0.1; they fall with n where an order is verified): bounds at 1.5 times these hold at every
 // level. Where the lattice floors L1_v it stays level: the largest value measured on the quick
-// and standard levels instead (1D hfact 2.4: 0.109, 0.121, 0.124 at n = 32, 64, 128; 2D hfact
-// 2.4: 0.175, 0.187 at n = 32, 64).
+// and standard levels instead (docs/cases/sound_wave.md).
 double l1_measured(const Params& p) {
   const long d = p.integer("dim");
   if (p.real("alpha") > 0.0) return d == 1 ? 0.0875 : d == 2 ? 0.20 : 0.301;
@@ -220,7 +216,7 @@ OrderClaims sound_orders(const Params& p) {
 }
 
 // Levels: 1D two in quick, three in standard and full (at A = 3e-8 round-off reaches the error
-// beyond n = 128: L1_v 3.8e-5 at n = 256 for A = 1e-8). 2D/3D up to the lattice floor's reach.
+// beyond n = 128). 2D/3D up to the lattice floor's reach.
 const Levels levels = {.quick = {32, 64}, .standard = {32, 64, 128}, .full = {32, 64, 128}};
 
 const Registration reg{Case{
