@@ -70,9 +70,8 @@ std::vector<Check> gates(const Sweep& s) {
     const std::string level = "n" + std::to_string(s.levels[k]);
     c.push_back({level + "_stable", double(r.verdict == "stable"), 1.0, 1.0, "runs to t_end with a finite, positive state"});
     if (r.verdict != "stable") continue;
-    // Measured L1(rho) at n = 200, 400, 800, 1600 (one thread): toro2 0.00667, 0.00419, 0.00255;
-    // toro3 (energy 38) at hfact 2.4 0.0177, 0.0252, 0.0199, 0.0244, at hfact 2 0.0189, 0.0139,
-    // 0.0093, 0.0068. Bound at every level: the largest measured + 20 %.
+    // Bound at every level: the largest L1(rho) measured (one thread; toro2 0.00667, toro3 with
+    // energy 38 at hfact 2.4 0.0252, at hfact 2 0.0189) + 20 %; the series: docs/cases/sod.md.
     const double tol = 1.2 * (preset == "toro2" ? 0.00667 : lattice_exact ? 0.0189 : 0.0252);
     c.push_back({level + "_L1_rho", r.errors.at("L1_rho"), 0.0, tol,
                  "L1(rho) against the exact Riemann solution (largest measured on 200..800 + 20 %)",
@@ -95,10 +94,10 @@ const Registration reg{Case{
     // Two levels in quick, so that CI gates every order claim; toro3 from n = 400, below which its
     // local orders are not yet first order at either hfact.
     .levels = {.quick = {200, 400}, .standard = {200, 400, 800}, .full = {200, 400, 800, 1600}},
-    // toro2: local orders 0.67, 0.72 on 200..800 (fit 0.69), band 0.5 around 1 (pre-asymptotic, as
-    // sod). toro3: the post-shock lattice keeps h/dx = hfact, and at 2.4 the kernel's lattice sums
-    // (noh.cpp) hold L1 at a level that does not fall with n; at hfact 2, where the 1D sums are
-    // exact, it converges (local orders 0.44, 0.58, 0.46 on 200..1600).
+    // toro2: band 0.5 around 1, the measured fit 0.69 on 200..800 (pre-asymptotic, as sod). toro3:
+    // the post-shock lattice keeps h/dx = hfact, and at 2.4 the kernel's lattice sums (noh.cpp)
+    // hold L1 at a level that does not fall with n; at hfact 2, where the 1D sums are exact, it
+    // converges (docs/cases/sod.md).
     .orders = [](const Params& p) {
       const OrderClaim first{1.0, 0.5, "discontinuities limit L1 convergence to first order"};
       if (p.text("preset") == "toro3" && p.real("hfact") != 2.0 && p.real("hfact") != 4.0)

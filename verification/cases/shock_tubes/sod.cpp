@@ -310,19 +310,16 @@ const char* const why_first_order =
     "contribution is O(1/n); the smooth rarefaction converges faster but the discontinuities limit the "
     "total to first order (grid codes: the same, Athena++ gates ratio <= 0.6 per doubling)";
 
-// 1D, measured orders on the quick levels 200, 400, 800 (L1_rho, L1_v, L1_p, L1_u):
-//   default 0.88 0.77 0.85 0.72; continuity33 0.90 0.78 0.82 0.72; euler=26 0.87 0.78 0.85 0.72;
-//   euler=25 0.88 0.78 0.84 0.71; euler=22 0.66 0.75 0.77 0.53; energy=38 0.85 0.78 0.89 0.66;
-//   integrator=chapter 0.88 0.77 0.85 0.72; visc_h=full 0.78 0.51 0.77 0.54
-// (fit standard errors 0.01-0.16). Pre-asymptotic: the local slope of L1_v and L1_u rises from
-// 0.4 to 1.0 across 100..1600 (start-up error at the contact). Band 0.5 around the expected 1:
-// it holds every measured variant and excludes a non-converging error (order 0, as (29) shows).
+// Band 0.5 around the expected 1: the 1D variants' orders on the quick levels measure 0.51 (L1_v,
+// visc_h=full) to 0.90 (docs/cases/sod.md), and the band excludes a non-converging error (order 0,
+// as (29) shows). The levels are pre-asymptotic: the start-up error at the contact makes the
+// local slope of L1_v and L1_u rise towards 1 only across n = 100..1600.
 OrderClaims first_order(const Params& p, int dim) {
   if (p.text("timestep") == "chapter") return {};  // unstable at every level: no errors
   OrderClaim claim{1.0, 0.5, why_first_order};
   // (29) is the Eulerian rate d(rho)/dt + v . grad rho: wrong by v . grad rho wherever a
-  // density gradient moves (the contact), an O(1) error that does not converge (measured orders
-  // -0.05..0.00 on 200..800): the claim every tube makes fails, and the default summation (27)
+  // density gradient moves (the contact), an O(1) error that does not converge (order about 0):
+  // the claim every tube makes fails, and the default summation (27)
   // on the same tube is the experiment that converges.
   if (p.text("density") == "continuity29")
     claim = known_failure(1.0, 0.5,
@@ -398,8 +395,8 @@ Case make_case(int dim) {
     // across): one level in quick. Its standard levels reach n = 48: the right state's support
     // radius h_r = 2 hfact / n is 0.5 at n = 16, wider than the plateau between the fan and the
     // shock (0.46), and until h_r falls below the 0.062 between the shock and x = 1 the error ahead of
-    // the shock samples a window of fixed width, so L1_v stalls from 16 to 24 (0.1141, 0.1157)
-    // and a fit over 16..32 does not resolve its order (0.70 +- 0.53); over 16..48 it does.
+    // the shock samples a window of fixed width, so L1_v stalls from 16 to 24 and a fit over
+    // 16..32 does not resolve its order; over 16..48 it does (docs/cases/sod.md).
     c.levels = {.quick = {16, 24}, .standard = {16, 24, 32}, .full = {16, 24, 32, 48}};
     c.variants = {{}, {"hfact=4"}};
     c.levels_for = [](const Params& p) {
