@@ -181,8 +181,7 @@ std::map<std::string, std::string> error_defs() {
 // standard levels; seeds fixed, so deterministic), per statistic and, in order, monopole theta
 // 0.2, 0.5, 0.8, quadrupole theta 0.2, 0.5, 0.8. At fixed theta the error does not converge with
 // N; from level to level it changes by up to 1.6x for p99 (another random sample), 4x for max
-// (one particle) and 55x for the energy (a signed sum that can cancel: Plummer quadrupole,
-// theta 0.2, 2e-9 at N = 10000 and 1.2e-7 at 20000).
+// (one particle) and 55x for the energy (a signed sum that can cancel; docs/cases/gravity.md).
 using Row6 = std::array<double, 6>;
 const std::map<std::string, std::array<Row6, 3>> largest_measured = {
     {"plummer",
@@ -234,8 +233,8 @@ std::vector<Check> gates(const Sweep& s) {
   // Bounds per model, statistic, multipole order and theta at every measured level: 1.5x the
   // largest measured value at N <= 20000, and at N = 100000 over all five levels. The
   // quadrupole p99 bounds lie below the monopole's measured p99 at every theta and level (by 1.2x
-  // at theta 0.8 up to 8x at 0.2), so a tree that drops the quadrupole term fails them (shown by
-  // experiment, see the gates report of issue 13). At other N, with another opening criterion
+  // at theta 0.8 up to 8x at 0.2), so a tree that drops the quadrupole term fails them. At other
+  // N, with another opening criterion
   // (opening=plain) or softening nothing was measured: no bounds then, only the published
   // numbers and the rates in theta below.
   const bool measured = r.params.value("opening", std::string("robust")) == "robust" &&
@@ -294,11 +293,8 @@ const Registration reg{Case{
                choice_param("model", "plummer", "particle set", {"uniform", "plummer", "clustered"}),
                real_param("eps", 0.01, "Plummer softening length (tree and direct sum)", std::nullopt),
                choice_param("opening", "robust", "opening criterion", {"robust", "plain"})},
-    // CPU time per variant (one core, user): N = 4096 ~0.7 s, 10000 ~2.7 s, 20000 ~8 s (the
-    // direct sum ~4 s of it); quick ~0.7 s, standard ~15 s (measured: 45 s user for the three
-    // variants, `sphv verify --tier standard`, under load). Full: 20000 and SPH-EXA's 1e5
-    // (estimate ~2.5 min for N = 1e5: direct sum ~100 s as N^2, tree walks ~40 s as N log N);
-    // the bounds above were not measured at 1e5.
+    // The direct sum's N^2 sets the cost: quick one level, standard up to 20000, full 20000 and
+    // SPH-EXA's 1e5 (CPU times: docs/cases/gravity.md).
     .levels = {.quick = {4096}, .standard = {4096, 10000, 20000}, .full = {20000, 100000}},
     .orders = [](const Params&) {
       OrderClaims o;

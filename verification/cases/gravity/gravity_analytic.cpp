@@ -129,11 +129,11 @@ std::vector<Check> gates(const Sweep& s) {
   // (G, masses, signs). rms in [0.7, 1.3]: 800 correlated samples; max below 5 (800 normal
   // samples exceed 5 with probability 5e-4). The tree (quadrupole, theta 0.5) is held to the same
   // test: its own error adds in quadrature to the sampling error, rms z_tree = sqrt(1 + (e_tree /
-  // se)^2) times the direct sum's. Its own error at the exterior probes is ~8e-4 (measured:
-  // g_out_tree^2 - g_out_direct^2 at N = 256000), a third of the standard error at N = 64000
-  // (rms z inflated by 5 %) but 0.6 of it at 256000 (measured there: rms z_tree 1.22, max 5.4,
-  // against 0.86 and 3.3 for the direct sum). So the exterior-force z-test of the tree runs up to
-  // N = 64000; beyond it the tree's own error is no longer negligible and only its bound holds.
+  // se)^2) times the direct sum's. Its own error at the exterior probes, ~8e-4 (g_out_tree^2 -
+  // g_out_direct^2 at N = 256000), is a third of the standard error at N = 64000 (rms z inflated
+  // by 5 %) but 0.6 of it at 256000, where the tree's z-scores leave the bounds
+  // (docs/cases/gravity.md). So the exterior-force z-test of the tree runs up to N = 64000; beyond
+  // it the tree's own error is not negligible and only its bound holds.
   // A tree without the quadrupole term fails it at N = 64000 (measured rms 1.36, max 5.9).
   const std::pair<const char*, const char*> zs[] = {
       {"phi", "phi_direct"}, {"g_out", "g_out_direct"}, {"phi_tree", "phi_tree"}, {"g_out_tree", "g_out_tree"}};
@@ -168,9 +168,7 @@ const Registration reg{Case{
     .tags = {"gate", "sweep"},
     .params = {integer_param("n", 4000, "number of particles", 1.0),
                choice_param("model", "uniform", "mass model", {"uniform", "plummer"})},
-    // CPU time per variant (one core, user + sys, measured on the shared machine): quick ~1.1 s
-    // (the N = 64000 level ~0.8 s: four tree builds, 200 probes, the per-probe variance sums);
-    // standard ~6.5 s (N = 256000 ~5 s). Full: the same range at ratio 2, a denser fit (~13 s).
+    // Full: the same range at ratio 2, a denser fit (CPU times: docs/cases/gravity.md).
     // Not beyond 2.6e5: there the sampling error of the exterior force (~1.4e-3) meets the tree's
     // own error at theta 0.5 (~8e-4), and g_out_tree stops falling as N^-1/2.
     .levels = {.quick = {1000, 4000, 16000, 64000},
