@@ -5,14 +5,13 @@
 // energy integral, checked against the published table in tests/extreme.cpp).
 //
 // Blast radius: a fixed fraction of R (r_blast = 1/4), not the initial h. Deposited over one
-// kernel of the initial h, the blast sat on the same ~20 particles at every resolution; their
-// volume cannot represent the hot, nearly empty centre, and they kept a resolution-independent
-// excess of the energy as heat (measured, 2D n = 64: 0.30 E as heat within R/2 against 0.127 E
-// exact; kinetic energy 0.237 E against 0.267 E). The profile lagged by 6.3, 4.8, 4.0% of R at
-// n = 32, 64, 128 (best-fitting R) and the density L1 did not converge (0.277, 0.279, 0.253).
-// With the blast on R/4 (the same particles at n = 32): lag 6.3, 2.5, 0.5%, kinetic energy
-// 0.225, 0.262, 0.270 E. The blast's finite size is remembered at t_end; at these levels it is
-// below the shock's smearing (the sweep's order says so).
+// kernel of the initial h, the blast would sit on the same ~20 particles at every resolution;
+// their volume cannot represent the hot, nearly empty centre, they keep a resolution-independent
+// excess of the energy as heat, the profile lags the similarity solution by a few per cent of R
+// at every n and the density L1 does not converge. On R/4 (the same particles at n = 32) the
+// deposit holds more particles at each finer level, and the lag and the missing kinetic energy
+// fall with n (docs/cases/sedov.md). The blast's finite size is remembered at t_end; at these
+// levels it is below the shock's smearing (the sweep's order says so).
 #include <cmath>
 #include <string>
 
@@ -92,9 +91,8 @@ void validate(const Params& p) {
                      " holds no particle: raise r_blast or n");
 }
 
-// Measured L1_rho at the finest quick level of each catalogue variant (2D n = 64; 3D n = 24 at
-// r_blast 1/4, n = 32 at 1/2; one thread): default 0.2030, gamma=1.4 0.3295, energy=41 0.2015,
-// dim=3 0.3207, dim=3 r_blast=0.5 0.2514. The bound at a sweep's finest level is that + 20 %: no
+// L1_rho measured at the finest quick level of each catalogue variant (2D n = 64; 3D n = 24 at
+// r_blast 1/4, n = 32 at 1/2; one thread). The bound at a sweep's finest level is that + 20 %: no
 // variant's error grows beyond its finest quick level on the standard and full levels (3D at
 // r_blast 1/4: 0.3187 at n = 32, 0.2565 at 48).
 double l1_measured(const Params& p) {
@@ -105,10 +103,9 @@ double l1_measured(const Params& p) {
 
 std::vector<Check> gates(const Sweep& s) {
   std::vector<Check> c = radial::per_level(s, [](const std::string& level, const Result& r, std::vector<Check>& c) {
-    // |R_front - R_front(rho_h)| / R, measured (one thread): 2D n = 32, 64: gamma 5/3 with (38)
-    // 4.3, 2.7 %, gamma 1.4 5.2, 2.5 %, (41) 4.3, 1.4 %; 3D n = 16, 24, 32: 2.4, 4.4, 6.8 % (the front lags
-    // more at each finer level, see the claims). Tolerances: 2D 8 % (margin 1.5 over the largest),
-    // 3D 10 % (margin 1.5 over n = 32).
+    // |R_front - R_front(rho_h)| / R, measured (one thread) at most 5.2 % in 2D (gamma 1.4,
+    // n = 32) and 6.8 % in 3D (n = 32; the front lags more at each finer level, see the claims).
+    // Tolerances: 2D 8 %, 3D 10 % (margin 1.5 over those).
     if (!r.errors.count("shock_radius")) return;
     const double tol = r.extra.value("dim", 2) == 3 ? 0.10 : 0.08;
     c.push_back({level + "_shock_radius", r.errors.at("shock_radius"), 0.0, tol,
@@ -131,22 +128,21 @@ std::vector<Check> gates(const Sweep& s) {
 // from the shock's width beyond the kernel's (the viscosity (38) spreads it over a few h; the
 // kernel's own smoothing is in the reference, sedov/errors.hpp) and from the blast's finite
 // deposit, whose memory fades as the deposit holds more particles.
-// 2D, measured local orders n = 32 -> 64 (one thread): L1_rho gamma 5/3 with (38) 0.45, gamma
-// 1.4 0.27 (0.397, 0.394, 0.330 at n = 32, 48, 64: the spike behind a gamma 1.4 shock is
-// compressed 6 times, not 4, and thinner), (41) 0.49; on 32..128 the local orders rise towards 1
-// (gamma 1.4: 0.27, 0.63). Band 0.75 around 1: the lowest measured pre-asymptotic order, 0.27,
-// minus a margin of 0.02. shock_radius gamma 5/3 0.67, gamma 1.4 1.07, (41) 1.69: faster
-// than first order while the blast's memory fades (the profile's lag behind the similarity
-// solution falls faster than h on these levels); band 0.8 around 1 (1.69 plus a margin of 0.11).
+// 2D: the levels are pre-asymptotic, and the local orders of L1_rho rise towards 1 on 32..128.
+// gamma 1.4 is the slowest: the spike behind a gamma 1.4 shock is compressed 6 times, not 4, and
+// is thinner. Band 0.75 around 1: the lowest measured pre-asymptotic order, 0.27 (gamma 1.4,
+// n = 32 -> 64), minus a margin of 0.02. shock_radius converges faster than first order while the
+// blast's memory fades (the profile's lag behind the similarity solution falls faster than h on
+// these levels); band 0.8 around 1: the largest measured order, 1.69 ((41)), plus a margin of
+// 0.11. The series: docs/cases/sedov.md.
 // 3D: with the heat on R/4 the deposit spans 1.2, 1.8, 2.4 lattice spacings at n = 16, 24, 32
 // (2D's coarsest level, n = 32, already has 2.4), and the hot particles keep the heat: the kinetic
-// share of the energy stays at 0.20-0.21 (exact 0.283), the front trails the kernel-smoothed exact
-// front further at each level (2.4, 4.4, 6.8 %) and L1_rho stays at 0.31-0.32; from n = 48 (3.6
-// spacings) the share rises (0.249) and both errors fall (3.9 %, 0.257). The same levels with
-// the heat on R/2 (2.4-4.8 spacings) converge: share 0.222, 0.239, 0.257 (0.277 at 48), L1_rho
-// 0.336, 0.283, 0.251 (0.200), front offset 3.0, 2.9, 2.4 % (2.0 %). A smaller Courant number
-// (0.15) changes nothing (the time step is not the cause), and the wider support hfact 4 does not
-// converge either. So 3D at R/4 is a known failure, with the deposit on R/2 as the variant that
+// share of the energy stays below the exact 0.283 without rising, the front trails the
+// kernel-smoothed exact front further at each level and L1_rho does not fall; from n = 48 (3.6
+// spacings) the share rises and both errors fall. The same levels with the heat on R/2 (2.4-4.8
+// spacings) converge (docs/cases/sedov.md). A smaller Courant number (0.15) changes nothing (the
+// time step is not the cause), and the wider support hfact 4 does not converge either. So 3D at
+// R/4 is a known failure, with the deposit on R/2 as the variant that
 // converges; the deposit's finite size is remembered at t_end (the error's limit is the point
 // blast's only as the deposit shrinks, which at fixed r_blast it does not: on these levels the
 // shock's smearing is larger than that memory).
@@ -167,9 +163,8 @@ OrderClaims sedov_orders(const Params& p) {
   return {{"shock_radius", radius}, {"L1_rho", l1}};
 }
 
-// Cost (wall, one thread, on a machine shared with other builds): 2D n = 32 4 s, 64 24 s, 128 ~60 s
-// (steps ~ n, particles ~ n^2), 256 ~ 8 min (estimated). Quick: two levels (the order claims are
-// gated in CI); standard: three; full adds 256.
+// Cost grows as n^3 (steps ~ n, particles ~ n^2; times: docs/cases/sedov.md). Quick: two levels
+// (the order claims are gated in CI); standard: three; full adds 256.
 const Levels levels = {.quick = {32, 64}, .standard = {32, 64, 128}, .full = {32, 64, 128, 256}};
 
 const Registration reg{Case{
@@ -203,7 +198,7 @@ const Registration reg{Case{
     .error_defs = sedov::error_defs,
     .variants = {{}, {"dim=3"}, {"dim=3", "r_blast=0.5"}, {"gamma=1.4"}, {"energy=41"}},
     .levels_for = [](const Params& p) {
-      // 3D (one thread): n = 16 1 s (4096 particles), 24 6 s, 32 30 s, 48 110 s. Quick: two levels
+      // 3D (cost ~ n^4; times: docs/cases/sedov.md). Quick: two levels
       // each, so that CI gates the known failure (16, 24) and the converging variant (16, 32);
       // standard: three; full adds 48.
       if (p.integer("dim") == 3)
