@@ -16,9 +16,9 @@
 // The density-energy form keeps u discontinuous while (27) smooths rho over h, so p = (gamma - 1)
 // rho u has an O(p) blip in a layer of width h at the contact: the spurious surface tension that
 // rounds the square's corners and drives the velocity noise. The blip's size does not fall with h,
-// and v_rms stays level (measured 2.53e-3, 2.51e-3 at n = 16, 32): a known failure, shown by the
-// smooth step of width 0.05 (lattice=one, width=0.05), where the pressure is uniform to O(h^2)
-// and v_rms falls (2.83e-3, 2.35e-4 at n = 32, 64). L1_rho (the smearing over h) and misfit (the
+// and v_rms stays level: a known failure, shown by the smooth step of width 0.05 (lattice=one,
+// width=0.05), where the pressure is uniform to O(h^2) and v_rms falls (docs/cases/square.md
+// holds the measured series). L1_rho (the smearing over h) and misfit (the
 // displacement of the edge's particles, confined to the layer of width h) converge at first order.
 #include <cmath>
 #include <map>
@@ -87,14 +87,8 @@ bool smooth(const Params& p) { return p.real("width") > 0.0; }
 
 // The errors at the coarsest quick level of each catalogue variant (t_end = 1, C = 0.3), on 2
 // cores: bounds at 1.5 times these hold at every level where the error falls with n. v_rms of the
-// sharp step does not fall: its value is the largest measured on the quick levels instead.
-// Measured, sharp step (n = 16, 32): cubic spline L1_rho 4.867e-2, 2.689e-2, misfit 5.180e-2,
-// 3.282e-2, v_rms 2.533e-3, 2.510e-3; v_adv = 0.3 (n = 16, 24, 32): L1_rho 4.867e-2, 3.638e-2,
-// 2.689e-2, misfit 5.180e-2, 3.868e-2, 3.282e-2, v_rms 2.530e-3, 2.934e-3, 2.512e-3; quintic
-// spline L1_rho 4.095e-2, 2.117e-2, misfit 3.114e-2, 1.788e-2, v_rms 2.944e-3, 1.561e-3; Wendland
-// C4 L1_rho 3.905e-2, 2.287e-2, misfit 3.220e-2, 1.875e-2, v_rms 3.123e-3, 1.807e-3. Smooth step
-// (width 0.05, lattice=one; n = 32, 64): L1_rho 1.256e-2, 3.772e-3, v_rms 2.832e-3, 2.347e-4.
-// Standard levels, cubic spline, n = 64: L1_rho 1.622e-2, misfit 2.612e-2, v_rms 2.493e-3.
+// sharp step does not fall: its value is the largest measured on the quick levels instead. The
+// series per variant: docs/cases/square.md.
 std::map<std::string, double> measured(const Params& p) {
   if (smooth(p)) return {{"L1_rho", 1.256e-2}, {"v_rms", 2.832e-3}};
   const std::string k = p.text("kernel");
@@ -124,9 +118,9 @@ std::vector<Check> gates(const Sweep& s) {
 OrderClaims orders(const Params& p) {
   OrderClaims c;
   if (smooth(p)) {
-    // Measured at n = 32, 64, 128: L1_rho 1.256e-2, 3.772e-3, 1.053e-3 (local orders 1.74, 1.84),
-    // v_rms 2.832e-3, 2.347e-4, 1.175e-4 (3.59, 1.00; standard fit 2.30 +- 0.75): the fall of the
-    // local order of v_rms below 2 at n = 128 is not explained yet.
+    // Bands: L1_rho measured local orders 1.74, 1.84 (n = 32..128), band 0.3; v_rms a standard
+    // fit of 2.30 +- 0.75, band 1. The fall of v_rms's local order below 2 at n = 128 is not
+    // explained (docs/cases/square.md).
     c["L1_rho"] = {2.0, 0.3, "a smooth density at uniform pressure: the summation density (27) errs by O(h^2 rho'') "
                              "with a symmetric kernel: second order"};
     c["v_rms"] = {3.0, 1.0, "the pressure (gamma - 1) rho u errs by the density's O(h^2 rho''), and the velocity it "
@@ -137,10 +131,9 @@ OrderClaims orders(const Params& p) {
   }
   c["L1_rho"] = {1.0, 0.3, "the summation density (27) spreads the step over the kernel's support h ~ 1/n along the "
                            "edges (an L1 error of the jump times the perimeter times h): first order"};
-  // Band 0.4: measured 0.66 (n = 16, 32); the standard levels' local orders are 0.66, 0.33 (misfit
-  // 5.18e-2, 3.28e-2, 2.61e-2 at n = 16, 32, 64), a fit of 0.49 +- 0.09 inside the band widened by
-  // two standard errors. The falling local order may be the corners' rounding approaching a size
-  // of its own: n = 128 is not yet measured.
+  // Band 0.4: measured 0.66 (n = 16, 32); on the standard levels a fit of 0.49 +- 0.09, inside the
+  // band widened by two standard errors, with a falling local order (docs/cases/square.md): the
+  // corners' rounding may approach a size of its own.
   c["misfit"] = {1.0, 0.4, "the edge's particles move within the layer of width h ~ 1/n where the pressure blip acts: "
                            "the area they leave on the wrong side of the edge is the perimeter times O(h): first order"};
   c["v_rms"] = known_failure(
@@ -189,9 +182,8 @@ const Registration reg{Case{
                  {"kernel=wendland_c4"}},
     .levels_for = [](const Params& p) {
       if (smooth(p)) return Levels{.quick = {32, 64}, .standard = {32, 64, 128}, .full = {32, 64, 128, 256}};
-      // The carried square and the other kernels: quick at n = 16, 24 (the gate's CPU budget; the
-      // orders measured there: L1_rho 0.72, 0.94, 0.80 and misfit 0.72, 0.72, 0.69 for v_adv = 0.3,
-      // the quintic spline and Wendland C4).
+      // The carried square and the other kernels: quick at n = 16, 24 (the gate's CPU budget; their
+      // orders there lie inside the bands, docs/cases/square.md).
       if (p.real("v_adv") != 0.0 || p.text("kernel") != "cubic_spline")
         return Levels{.quick = {16, 24}, .standard = {16, 32, 64}, .full = {16, 32, 64, 128}};
       return levels;
