@@ -76,10 +76,10 @@ bool converges(const Params& p) {
   return p.text("kernel") == "wendland_c4" && p.real("hfact") == 4.5 && p.real("alpha") == 0.1;
 }
 
-// The growth error's largest value measured on the variant's levels of every tier (cubic alpha =
-// 1: 0.311, 0.369, 0.387, 1.240, 0.684 at n = 32, 64, 96, 128, 256, the rate negative at 128;
-// alpha = 0: 0.393, 0.692, 0.798, 0.726, 0.549; Wendland C4: 1.184 at n = 32, where M does not yet
-// grow, then 0.695, 0.489, 0.381, 0.221); the gate holds each level at 1.5 times it. A loose
+// The growth error's largest value measured on the variant's levels of every tier (cubic alpha 1:
+// 1.240 at n = 128, where the rate is negative; alpha 0: 0.798; Wendland C4: 1.184 at n = 32,
+// where M does not yet grow; the series: docs/cases/kh.md); the gate holds each level at 1.5
+// times it. A loose
 // bound, which a fault that stops the growth or doubles it on the Wendland variant crosses; the
 // order claim (kh_orders) and the exact check of the measurement (M0) are the verification.
 double growth_measured(const Params& p) {
@@ -113,23 +113,19 @@ std::vector<Check> gates(const Sweep& s) {
 //   neighbours the pressure p0 turns that disorder into force noise that does not fall with h. It
 //   drives row-by-row v_y noise ~0.1 (ten times the seed) at alpha = 0, and with alpha = 1 the
 //   viscosity that damps the noise damps the seed too.
-// Measured (square lattice, t_fit 0.6-1.2 against the linear evolution's 2.95, n = 32, 64, 96):
-//   cubic, hfact 2.4, alpha 1:          rates 2.03, 1.86, 1.81 (errors 0.31, 0.37, 0.39, rising);
-//   cubic, hfact 2.4, alpha 0:          1.79, 0.91, 0.60: the noise swamps the mode (M at t = 1.2 is
-//                                       0.06 of the linear evolution's at n = 32);
-//   cubic, hfact 3 or 3.6, alpha 0.1:   -0.47, -0.33, 1.05 and 0.61, 1.58, 1.61: no trend;
-//   uniform density (rho2 = 1), alpha 0: 0.61, 0.06, 0.20: the density contrast is not the cause;
-//   Wendland C4, hfact 4.5, alpha 0.1:  -0.54, 0.90, 1.51 (errors 1.18, 0.69, 0.49; order 0.80 +-
-//                                       0.03): M grows smoothly, at first order towards the rate;
-//   Wendland C4, hfact 4.5, alpha 0:    -0.07, 1.32, 1.89 (order 0.94 +- 0.05; not a variant).
-// So the cubic variants are known failures of the first-order claim and the Wendland C4 kernel at
-// hfact 4.5 (64 neighbours) with alpha 0.1 is the experiment that converges, as for gresho. Both
+// With the cubic spline the error does not fall: at alpha 1 the rate stays below the linear one
+// and its error rises with n; at alpha 0 the noise swamps the mode; a wider cubic support
+// (hfact 3 or 3.6, alpha 0.1) shows no trend, and a uniform density (rho2 = 1) fails the same way,
+// so the density contrast is not the cause. With Wendland C4 at hfact 4.5 M grows smoothly and
+// its rate converges at first order towards the linear one (the measured rates per variant:
+// docs/cases/kh.md). So the cubic variants are known failures of the first-order claim and the
+// Wendland C4 kernel at hfact 4.5 (64 neighbours) with alpha 0.1 is the experiment that
+// converges, as for gresho. Both
 // agree with the literature: McNally et al. (2012) find SPH's growth poor on this set-up and trace
 // it to the zeroth-order inconsistency; Tricco (2019, arXiv:1907.03935; on the
 // smooth set-up of Lecoanet et al. 2016) needs a high-order kernel to resolve the seed and keep
 // spurious modes down, and then converges.
-// Band 0.35 as gresho's: the experiment's local orders 0.77, 0.85 on n = 32, 64, 96 (full tier,
-// n = 32 ... 256: 0.81 +- 0.01).
+// Band 0.35 as gresho's: the experiment's measured local orders 0.77, 0.85 on n = 32, 64, 96.
 OrderClaims kh_orders(const Params& p) {
   OrderClaims c;
   const std::string first = "the kernel's smoothing of the layer (support comparable with its width L) and the "
@@ -150,7 +146,7 @@ OrderClaims kh_orders(const Params& p) {
   return c;
 }
 
-// Standard stops at n = 96: n = 128 costs about a minute of CPU a variant.
+// Standard stops at n = 96: the cost grows as n^3 (steps ~ n, particles ~ n^2; docs/cases/kh.md).
 const Levels levels = {.quick = {32, 64}, .standard = {32, 64, 96}, .full = {32, 64, 128, 256}};
 
 const Registration reg{Case{
