@@ -189,13 +189,12 @@ OrderClaims orders(const Params& p) {
   return {{"L2_f", two}, {"L2_grad19", floor("L2_grad19")}, {"L2_grad32", floor("L2_grad32")}};
 }
 
-// CPU (user, one thread): quick 2.0 s and standard 2.9 s for the first five variants together;
-// the 3D root variant costs ~1.4 times the 3D one (its neighbours, (2.627/2)^3 = 2.3 times);
-// cost ~ N at fixed h/dx: full's 2D n = 512 (262k particles) ~4 s, 1D n = 1024 negligible (estimated).
+// Cost ~ N at fixed h/dx (the 3D root variant's neighbours (2.627/2)^3 = 2.3 times the 3D
+// one's; CPU times: docs/cases/operators.md).
 const Levels levels = {.quick = {16, 32, 64}, .standard = {16, 32, 64, 128, 256}, .full = {16, 32, 64, 128, 256, 512}};
 
 // 3D lattices above 64^3 take tens of seconds per level: the standard sweep stops there; full
-// adds 128^3 (2.1M particles, ~1 min and ~1 GB estimated from 64^3 times 8).
+// adds 128^3 (2.1M particles, eight times 64^3 in time and memory).
 Levels levels_for(const Params& p) {
   if (p.integer("dim") == 3) return {.quick = {16, 32, 64}, .standard = {16, 32, 64}, .full = {16, 32, 64, 128}};
   return levels;

@@ -195,12 +195,9 @@ Result run(const Params& p) {
 //   Wendland C4 (1D: e = 5, p = 5; 2D, 3D: e = 6, p = 5): 6, 7 (the origin), 8
 //   Wendland C6 (1D: e = 7, p = 7; 2D, 3D: e = 8, p = 7): 8, 9 (the origin), 10
 // Fits of an independent evaluation (numpy, the same error definition) on the quick levels
-// n = 16..128, 1D, 2D, 3D: cubic 3.57 +- 0.21, 3.95 +- 0.28, 4.53 +- 0.18; quartic 3.80 +- 0.39,
-// 4.32 +- 0.47, 5.32 +- 0.49; quintic 5.70 +- 0.49, 6.72 +- 0.35, 7.44 +- 0.34; Wendland C2 3.83,
-// 5.04, 5.96, C4 5.97, 6.89, 7.90, C6 7.87, 8.89, 9.89 (+- 0.03-0.10); on 16..256 quartic 4.12,
-// 4.58, 5.43, the others within 0.25 of their quick fits. The B-splines are pre-asymptotic (at
-// n = 16, h/dx = 2.2, the quartic's knot at h/5 lies 0.44 dx from the centre; its local slopes in
-// 1D are 3.6, 2.7, 5.5, 4.8, 4.9 over 16..512); the Wendland functions, one piece each, are not.
+// (docs/cases/kernel.md) fall short of these for the B-splines, which are pre-asymptotic there
+// (at n = 16, h/dx = 2.2, the quartic's knot at h/5 lies 0.44 dx from the centre, and its local
+// slopes scatter); the Wendland functions, one piece each, are not.
 struct Theory {
   double order[3];
   double band;  // the measured deficits above plus a margin
@@ -215,22 +212,18 @@ const char* const why_wendland = "trapezoidal lattice sum of a one-piece Wendlan
                                  "decays as |k|^-(e + 1 + (d-1)/2) from (1-q)^e at the edge and as |k|^-(d + p) from "
                                  "the odd power q^p at the origin, the slower of the two";
 const std::map<std::string, Theory> theory = {
-    // Band 0.6: the largest deficit measured, 0.55 (2D on 16..128), plus 0.05. Its bound: err n^p
-    // measured at n = 128 and 256: 1D (p 3.5) 60.8, 57.5; 2D (p 4) 257, 209; 3D (p 4.5) 1068, 802;
-    // C = 1.5 times the larger (the error oscillates with n).
+    // Band 0.6: the largest deficit measured, 0.55 (2D on 16..128), plus 0.05. Its bound: C = 1.5
+    // times the larger err n^p measured at n = 128 and 256 (the error oscillates with n).
     {"cubic_spline", {{4.0, 4.5, 5.0}, 0.6, why_pieces, {3.5, 4.0, 4.5}, {92.0, 385.0, 1600.0}}},
     // Band 0.8: with the harness's 2 se (0.78-0.98 on the quick levels) it holds the measured
-    // deficits 1.20 and 1.18 (1D, 2D) with 0.38 to spare; on 16..256 0.88 and 0.92 against 0.8
-    // plus 2 se of 0.58 and 0.62. Bounds at p = order - band: err n^p at 64..512: 1D 472 .. 82.6,
-    // 2D 2020 .. 384, 3D 6930 .. 1280.
+    // deficits 1.20 and 1.18 (1D, 2D) with 0.38 to spare. Bounds at p = order - band: C = 1.5 times
+    // the largest err n^p at 64..512, which falls with n.
     {"quartic_spline", {{5.0, 5.5, 6.0}, 0.8, why_pieces, {4.2, 4.7, 5.2}, {708.0, 3030.0, 10400.0}}},
-    // Band 0.8: the largest measured difference is 0.44 (3D, 7.44 against 7). err n^p at 64..512:
-    // 1D 2860 .. 1510, 2D 11100 .. 6040, 3D 34900, 37800, 41400, 24400.
+    // Band 0.8: the largest measured difference is 0.44 (3D, 7.44 against 7). C = 1.5 times the
+    // largest err n^p at 64..512.
     {"quintic_spline", {{6.0, 6.5, 7.0}, 0.8, why_pieces, {5.2, 5.7, 6.2}, {4290.0, 16700.0, 62100.0}}},
     // Band 0.5: the largest measured deficit is 0.17 (C2 1D, 3.83 against 4), three times over.
-    // err n^p at 64..512 fall with n (1D 80.4 .. 29.7, 2D 3250 .. 1210, 3D 51800 .. 21500; C4 1D
-    // 11800 .. 5360, 2D 9.8e5 .. 3.4e5, 3D 1.97e7 .. 7.2e6; C6 on 64..256 1D 5.8e6 .. 3.1e6, 2D
-    // 5.0e8 .. 2.6e8, 3D 1.24e10 .. 6.3e9).
+    // C = 1.5 times the largest err n^p at 64..512 (64..256 for C6), which falls with n.
     {"wendland_c2", {{4.0, 5.0, 6.0}, 0.5, why_wendland, {3.5, 4.5, 5.5}, {121.0, 4880.0, 77700.0}}},
     {"wendland_c4", {{6.0, 7.0, 8.0}, 0.5, why_wendland, {5.5, 6.5, 7.5}, {17700.0, 1.47e6, 2.95e7}}},
     {"wendland_c6", {{8.0, 9.0, 10.0}, 0.5, why_wendland, {7.5, 8.5, 9.5}, {8.69e6, 7.54e8, 1.86e10}}},
@@ -249,7 +242,7 @@ std::vector<Check> gates(const Sweep& s) {
   const auto& x = fine.extra;
   for (int d = 0; d < 3; ++d) {
     const std::string dim = std::to_string(d + 1) + "d";
-    // The issue's bound; GSL's QAGP reaches ~1e-15 on these piecewise polynomials (split at the knots).
+    // Normalisation to 1e-10; GSL's QAGP reaches ~1e-15 on these piecewise polynomials (split at the knots).
     c.push_back({"quadrature_" + dim, x["quadrature_error"][d], 0.0, 1e-10, "issue 2: |int W - 1| <= 1e-10"});
     // Truncation + round-off estimate of the central difference, see derivative_error.
     c.push_back({"derivative_" + dim, x["derivative_error"][d], 0.0, 1e-8, "central difference, step 1e-5 h"});
@@ -283,8 +276,7 @@ std::vector<std::vector<std::string>> variants() {
   return v;
 }
 
-// CPU (user, one thread): quick 0.03 s, standard 0.10 s a kernel; the 3D sum grows as n^3, so
-// full's n = 512 adds ~0.6 s and 1024 ~5 s (estimated).
+// The 3D sum's cost grows as n^3: full alone goes to n = 1024 (CPU times: docs/cases/kernel.md).
 const Levels cubic_levels = {.quick = {16, 32, 64, 128}, .standard = {16, 32, 64, 128, 256},
                              .full = {16, 32, 64, 128, 256, 512, 1024}};
 

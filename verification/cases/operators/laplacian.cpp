@@ -170,12 +170,11 @@ void validate(const Params& p) {
 
 // Theory: O(h^2) smoothing error of a symmetric kernel. On a lattice every error is that of the
 // operator's lattice symbol (gates), so the fitted slopes are a deterministic function of the
-// levels (their se reflects the curvature of the symbol's error, not noise). Measured slopes,
-// quick (16-32) / standard (16-64; 16-48 in 3D):
-//   Brookshaw  1D 1.97 / 1.98, 2D 1.90 / 1.88, 3D 1.91 / 1.94: band 0.15;
-//   two-pass   1D 1.90 / 1.94, 2D 1.78 / 1.84, 3D 1.72 / 1.83: band 0.35 (its symbol |g(k)|^2 is
-//   the square of the gradient's, a kernel twice as wide: the (k h)^4 term weighs more at kh near
-//   pi/2 (n = 16), and the fit over the quick levels sits 0.28 below 2 in 3D).
+// levels (their se reflects the curvature of the symbol's error, not noise). Bands: Brookshaw
+// 0.15 (measured slopes 1.88 to 1.98 on the quick and standard levels); two-pass 0.35 (measured
+// down to 1.72, quick levels in 3D): its symbol |g(k)|^2 is the square of the gradient's, a kernel
+// twice as wide, so the (k h)^4 term weighs more at kh near pi/2 (n = 16). The slopes per form
+// and dimension: docs/cases/operators.md.
 OrderClaims orders(const Params& p) {
   const long dim = p.integer("dim");
   if (p.real("jitter") > 0.0) {
@@ -190,8 +189,8 @@ OrderClaims orders(const Params& p) {
     // lattice moments' errors as powers of dx/h (the fourth moments' anisotropy as (dx/h)^4,
     // n^(-4 hgrow)), so at hgrow = 1/2 every error is first order in n (second in h). Bands as
     // at fixed h/dx: 0.15, and 0.35 for the two-pass forms, whose (k h)^4 term weighs more (h
-    // falls only as n^(-1/2) here: k h ~ 1 on the quick levels). Measured at hfact 4, quick
-    // levels: tensor_73 1.06 (2D), 0.98 (3D); brookshaw 0.96, 0.94; two-pass 0.87, 0.82.
+    // falls only as n^(-1/2) here: k h ~ 1 on the quick levels; measured at hfact 4 there: 0.82
+    // to 1.06, docs/cases/operators.md).
     const std::string why = "h/dx growing as (n/16)^hgrow: the O(h^2) smoothing error, h ~ n^(hgrow - 1), "
                             "dominates the lattice moments' errors, which fall as powers of dx/h";
     const double order = 2.0 * (1.0 - p.real("hgrow"));
@@ -310,9 +309,8 @@ std::vector<Check> gates(const Sweep& s) {
   return c;
 }
 
-// CPU time per level (one thread, measured on the loaded machine as wall / ~6): 1D and 2D < 0.1 s
-// at n = 64; 3D n = 32 ~3 s, 48 ~10 s, 64 ~16 s, so the 3D standard sweep stops at 48 and 64 is
-// full only; 3D n = 96 (full) ~55 s estimated (N^1 at fixed neighbours, 3.4x n = 64).
+// Cost ~ N at fixed neighbours: 1D and 2D are cheap, 3D grows as n^3, so the 3D standard sweep
+// stops at 48 and 64, 96 are full only (CPU times: docs/cases/operators.md).
 const Levels levels = {.quick = {16, 24, 32}, .standard = {16, 24, 32, 48, 64}, .full = {16, 24, 32, 48, 64, 96, 128}};
 Levels levels_for(const Params& p) {
   // h/dx growing as sqrt(n/16) in 3D: 2.8 times the neighbours of h/dx = 4 at n = 32 (5.66),
