@@ -183,9 +183,9 @@ std::vector<Check> gates(const Sweep& s) {
       c.push_back({level + "_" + name, r.errors.at(name), 0.0, bound,
                    "against the 1D Lagrangian reference (measured at n = 912, margin 1.5)", Check::Kind::verification,
                    name});
-    // Peak thermal energy: the task brief quotes 1.1-1.2 for published SPH runs with ~1e3-1e4 particles
-    // (Evrard 1988, Steinmetz & Mueller 1993, Springel 2005; no table of these was found to confirm
-    // them); measured here 1.15 at n = 912, 1.24 at 2176; the 1D reference peaks at 1.75 (800 zones, converging
+    // Peak thermal energy: 1.1-1.2 for published SPH runs with ~1e3-1e4 particles as quoted in the
+    // task brief (Evrard 1988, Steinmetz & Mueller 1993, Springel 2005; not confirmed from a table);
+    // measured here 1.15 at n = 912, 1.24 at 2176; the 1D reference peaks at 1.75 (800 zones, converging
     // upwards to ~1.76). The run must lie between a clearly bounced state (0.9) and just above the 1D value.
     c.push_back({level + "_thermal_peak", r.functionals.at("thermal_peak"), 0.9, 1.8,
                  "peak E_th between a bounced low-resolution SPH value and the converged 1D value"});
@@ -219,17 +219,15 @@ const Registration reg{Case{
       return ps;
     }(),
     // Lattices of 12, 16, 20, 24, 32 cells per diameter (exact counts, so that the order fit sees
-    // the real N). Cost (wall, one thread, machine loaded ~6x): N = 912 120 s; the cost grows
-    // ~N^(4/3) (more steps as h shrinks, tree N log N), so 2176 ~ 5 min, 4224 ~ 12 min,
-    // 7208 ~ 25 min, 17256 ~ 80 min (estimates from the 912 run). Quick: one level (bounds only);
-    // standard: the four smallest lattices (the density profile's fit over the three smallest,
-    // 0.52 +- 0.20, does not resolve the band; over four its se is 0.10); full: up to 1.7e4
-    // particles (publication size).
+    // the real N). The cost grows ~N^(4/3) (more steps as h shrinks, tree N log N; times:
+    // docs/cases/evrard.md). Quick: one level (bounds only); standard: the four smallest lattices
+    // (a fit over the three smallest has too large a standard error to resolve the band); full: up
+    // to 1.7e4 particles (publication size).
     .levels = {.quick = {912}, .standard = {912, 2176, 4224, 7208}, .full = {2176, 4224, 7208, 17256}},
-    // Band 0.15 around 1/3. Measured over the standard levels (N = 912 ... 7208): the energy
-    // curves 0.31-0.34, their maxima 0.35-0.36, the profiles rho 0.52 +- 0.10, v_r 0.51 +- 0.08,
-    // u 0.16 +- 0.04 (the bounce shock's smearing still falling faster, resp. slower, than its
-    // limit at these N); full tier (2176 ... 17256) rho 0.45 +- 0.13.
+    // Band 0.15 around 1/3: the energy curves and their maxima measure 0.31-0.36 on the standard
+    // levels; the profiles' fits lie further off, within two standard errors of the band (the
+    // bounce shock's smearing still falling faster, resp. slower, than its limit at these N;
+    // docs/cases/evrard.md).
     .orders =
         [](const Params&) {
           const OrderClaim third{1.0 / 3.0, 0.15,
