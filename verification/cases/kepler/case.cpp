@@ -175,9 +175,8 @@ const Registration reg{Case{
                real_param("e", 0.5, "eccentricity of the single orbit (0 <= e < 1)", std::nullopt),
                real_param("eps_ring", 0.1, "softening length (77) for the ring of circular orbits", 0.0)},
     // From 128 steps per orbit: at 64 the KDK phase error after 10 orbits is O(1) (position error
-    // saturates at the orbit's diameter). CPU time (one core, user): quick 0.04 s, standard 0.08 s;
-    // full adds 4096 and 8192 (~0.5 s; the ring's dt^4 energy error there is ~7e-12, still 100x
-    // above the round-off of 8e4 steps).
+    // saturates at the orbit's diameter). Full adds 4096 and 8192 (the ring's dt^4 energy error
+    // there, ~7e-12, still 100x above the round-off of 8e4 steps; CPU times: docs/cases/kepler.md).
     .levels = {.quick = {128, 256, 512, 1024},
                .standard = {128, 256, 512, 1024, 2048},
                .full = {128, 256, 512, 1024, 2048, 4096, 8192}},
