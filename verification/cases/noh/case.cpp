@@ -152,10 +152,10 @@ OrderClaims noh_orders(const Params& p) {
 }
 
 // Levels: 1D two in quick (the order claims are gated in CI), three in standard. 2D: n = 100 costs
-// about 1.7 times n = 71 (25 s against 15 s on one core), so it is full only. 3D: the front is
-// resolved from n = 20 on (R_s = 1.7 initial h; below it only the swept mass is reported), so the
-// standard levels start there and the three give the front's order; n = 28 holds 83,000
-// particles and costs 48 s on one core, n = 32 would exceed max_particles.
+// about 1.7 times n = 71, so it is full only. 3D: the front is resolved from n = 20 on (R_s = 1.7
+// initial h; below it only the swept mass is reported), so the standard levels start there and the
+// three give the front's order; n = 28 holds 83,000 particles, n = 32 would exceed max_particles
+// (CPU times: docs/cases/noh.md).
 const Levels levels = {.quick = {100, 200}, .standard = {200, 400, 800}, .full = {200, 400, 800, 1600}};
 
 const Registration reg{Case{

@@ -137,18 +137,18 @@ std::vector<Check> gates(const Sweep& s) {
 }
 
 OrderClaims orders(const Params&) {
-  // Band 0.15: local orders measured 0.68, 0.66, 0.63, 0.41 over N = 552, 1189, 2176, 4224, 7208 (fit
-  // 0.67 +- 0.01 on the standard levels, 0.59 +- 0.04 on the full tier's): the last step falls
-  // short of 2/3, a floor (the fixed opening angle, the (50) iteration's tolerance) or a
-  // pre-asymptotic range that the full tier does not resolve.
+  // Band 0.15: the fit measures 0.67 +- 0.01 on the standard levels, 0.59 +- 0.04 on the full
+  // tier's, whose last step falls short of 2/3 (docs/cases/polytrope.md): a floor (the fixed
+  // opening angle, the (50) iteration's tolerance) or a pre-asymptotic range that the full tier
+  // does not resolve.
   const OrderClaim profile{
       2.0 / 3.0, 0.15,
       "the kernel's smoothing error O(h^2) inside and, at the surface where rho falls linearly to 0, an O(1) relative "
       "error over a layer of thickness ~h holding a mass fraction O(h^2): second order in h ~ N^(-1/3) at fixed hfact "
       "and eps / spacing, order 2/3 in the particle number"};
-  // Band 0.15: local orders measured 0.32, 0.26, 0.20, 0.18 over N = 552, 1189, 2176, 4224, 7208 (fit
-  // 0.30 +- 0.02 on the standard levels, 0.21 +- 0.01 on the full tier's, inside the band but
-  // falling: the full tier is where this claim would fail first).
+  // Band 0.15: the fit measures 0.30 +- 0.02 on the standard levels, 0.21 +- 0.01 on the full
+  // tier's, inside the band but falling (docs/cases/polytrope.md): the full tier is where this
+  // claim would fail first.
   const OrderClaim drift{
       1.0 / 3.0, 0.15,
       "the star starts on the analytic profile, off the scheme's own equilibrium by the smoothing and softening "
