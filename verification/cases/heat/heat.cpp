@@ -164,11 +164,10 @@ std::vector<Check> gates(const Sweep& s) {
                                std::exp(-fine.extra["decay_rate_analytic"].get<double>() * t));
   c.push_back({"spatial_sine_vs_lattice_symbol", std::abs(fine.errors.at("spatial_sine") / pred - 1.0), 0.0, 1e-5,
                "closed form of the eigenmode's error from the lattice symbol", Check::Kind::verification, "spatial_sine"});
-  // Measured constants err n^p at the finest quick (n = 32) and standard (n = 64) levels, hfact 4,
-  // K 0.01, t_end 2.5, courant 0.02: 1D gauss 1.57, 1.55; euler 0.750, 0.745; heun 6.31, 6.03.
-  // 2D gauss, its lattice floor (3.84e-5 at h/dx = 4) taken off, 0.807, 0.791 (0.771 at n = 128;
-  // with the floor left in, err n^2 grows: 0.846, 0.948, 1.400); euler 0.401, 0.401; heun 3.70,
-  // 3.62. Bound: the larger times 1.25.
+  // Constants err n^p measured at the finest quick (n = 32) and standard (n = 64) levels (hfact 4,
+  // K 0.01, t_end 2.5, courant 0.02; docs/cases/heat.md). In 2D the gauss error carries its
+  // lattice floor (3.84e-5 at h/dx = 4), taken off first: with the floor left in, err n^2 grows.
+  // Bound: the larger times 1.25.
   const bool one = dim == 1;
   c.push_back(scaled_bound(fine, "spatial_gauss", 2, one ? 1.96 : 1.01, "measured 1.57 (1D) / 0.807 (2D), margin 25%",
                            fine.extra["spatial_gauss_floor"].get<double>()));
@@ -195,8 +194,8 @@ const Registration reg{Case{
                choice_param("solver", "spgmr", "CVODE linear solver", {"spgmr", "band", "dense"}),
                choice_param("setup", "gauss", "the set-up of a scored snapshot (sphv score; sphv run integrates both): "
                             "gauss (spatial_gauss) or sine (spatial_sine)", {"gauss", "sine"})},
-    // CPU (user, one thread): quick 0.7 s, standard 5.2 s (2D n = 64 most of it). Explicit steps
-    // grow as n^2 and particles as n^d: full's 2D n = 96 ~10 s, n = 128 ~40 s (estimated).
+    // Explicit steps grow as n^2 and particles as n^d: 2D n = 96 and 128 are full only (CPU
+    // times: docs/cases/heat.md).
     .levels = {.quick = {16, 24, 32}, .standard = {16, 24, 32, 48, 64}, .full = {16, 24, 32, 48, 64, 96, 128}},
     // Band +-0.35 around theory: the fits include pre-asymptotic coarse levels (measured).
     .orders = [](const Params&) {

@@ -109,8 +109,8 @@ const Registration reg{Case{
                choice_param("form", "brookshaw", "conduction form", {"brookshaw", "flux_56_58", "flux_57_59"}),
                choice_param("method", "euler", "explicit method", {"euler", "heun"})},
     // No convergence to show (the ratio is 1 at every n): full adds one larger lattice as a check
-    // that the bound holds there too. CPU (user, one thread): quick 2.4 s, standard 11.2 s for the
-    // five variants; bisection runs ~ n^d particles x steps: n = 24 ~3x n = 16 in 2D (estimated).
+    // that the bound holds there too. Bisection runs ~ n^d particles x steps (CPU times:
+    // docs/cases/heat.md).
     .levels = {.quick = {10}, .standard = {10, 16}, .full = {10, 16, 24}},
     .orders = [](const Params&) { return OrderClaims{}; },  // no convergence: the ratio measured / bound is 1 at every n: no errors, only verdicts and bounds
     .variants = {{}, {"dim=2"}, {"dim=3", "steps=150", "hfact_max=2.5"}, {"method=heun"}, {"form=flux_57_59"}},

@@ -103,9 +103,8 @@ std::vector<Check> gates(const Sweep& s) {
   return c;
 }
 
-// A map of verdicts per resolution, no convergence: full adds one larger set. CPU (user, one
-// thread): quick 0.8 s, standard 3.7 s for the five variants; n = 128 (64 in 2D) ~2x n = 64
-// (estimated: particles x fixed steps).
+// A map of verdicts per resolution, no convergence: full adds one larger set (cost: particles x
+// fixed steps; CPU times: docs/cases/heat.md).
 const Levels levels = {.quick = {32}, .standard = {32, 64}, .full = {32, 64, 128}};
 
 const Registration reg{Case{
