@@ -99,7 +99,7 @@ std::vector<Check> gates(const Sweep& s) {
   for (const auto& r : s.runs) {
     const std::string n = "_n" + std::to_string(r.params.value("n", 0L));
     c.push_back({"verdict" + n, r.verdict == "ok" ? 1.0 : 0.0, 1.0, 1.0, r.verdict});
-    // The bound 1e-12; the proof (92)-(95) makes the drift pure round-off (measured
+    // Bound 1e-12; the proof (92)-(95) makes the drift pure round-off (measured
     // <= 1.5e-15 over 150 steps in 2D and 3D, with and without viscosity).
     c.push_back({"momentum_symmetric" + n, r.errors.at("momentum_symmetric"), 0.0, 1e-12, "(92): pairwise forces", v,
                  "momentum_symmetric"});
@@ -135,10 +135,9 @@ std::vector<Check> gates(const Sweep& s) {
   return c;
 }
 
-// CPU time (one core, user): quick 9 s for all three variants; standard 33 s for all three
-// (2D 16, 24, 32: ~15 s a variant; the catalogue is 36 pairings). 3D costs ~10x more per level
-// (n = 12: 300 s wall loaded), so its standard tier is the quick level only and full carries 12
-// and 16 (n = 16: estimate ~10 min CPU, 2.4x the particles of 12 with more neighbours).
+// Each level runs the whole catalogue of 36 pairings. 3D costs ~10x more per level, so its
+// standard tier is the quick level only and full carries 12 and 16 (2.4x the particles of 12 with
+// more neighbours; CPU times: docs/cases/conservation.md).
 const Levels levels = {.quick = {16}, .standard = {16, 24, 32}, .full = {16, 24, 32}};
 
 const Registration reg{Case{

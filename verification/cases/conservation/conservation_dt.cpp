@@ -69,9 +69,9 @@ const Registration reg{Case{
                integer_param("res", 12, "particles per blob diameter"),
                choice_param("visc", "0", "artificial viscosity on (1) or off (0)", {"0", "1"}),
                real_param("t_end", 0.4, "end time (the blobs meet at about 0.15)", 0.0)},
-    // dt = 1/100 is pre-asymptotic with viscosity (measured slope 3.5 there). CPU time (one core,
-    // user) of all seven variants: quick 1.2 s, standard 1.4 s. Full adds dt = 1/3200 (about
-    // 0.4 s a variant; the error there, ~2e-7, is still 1e8 above round-off).
+    // dt = 1/100 is pre-asymptotic with viscosity (measured slope 3.5 there). Full adds
+    // dt = 1/3200 (the error there, ~2e-7, is still 1e8 above round-off; CPU times:
+    // docs/cases/conservation.md).
     .levels = {.quick = {400, 800, 1600}, .standard = {200, 400, 800, 1600}, .full = {200, 400, 800, 1600, 3200}},
     // Leapfrog is second order (9.3.2, errata); the fit over dt = 1/400 .. 1/1600 measured
     // 1.91-1.97 (KDK and chapter, with and without viscosity), over 1/200 .. 1/1600 1.87-1.95 and

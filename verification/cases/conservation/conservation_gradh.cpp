@@ -154,8 +154,7 @@ const Registration reg{Case{
                choice_param("density", "summation", "density method", {"summation", "continuity33", "continuity29"}),
                integer_param("res", 12, "particles per blob diameter"),
                real_param("t_end", 0.2, "end time", 0.0)},
-    // CPU time (one core, user) of the three variants: quick 0.3 s, standard 0.4 s; full adds
-    // dt = 1/3200 (~0.2 s a variant).
+    // Full adds dt = 1/3200 (CPU times: docs/cases/conservation.md).
     .levels = {.quick = {400, 800, 1600}, .standard = {200, 400, 800, 1600}, .full = {200, 400, 800, 1600, 3200}},
     .orders = orders,
     .error_defs = {{"energy_fixed_h", "largest |E(t) - E(0)| / E(0) over the run, fixed smoothing lengths"},
