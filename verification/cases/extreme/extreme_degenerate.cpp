@@ -141,7 +141,7 @@ std::vector<Check> gates(const Sweep& s) {
     if (smooth && r.verdict == "stable" && k + 1 == s.runs.size()) {
       // The finest level: at most the error measured at the finest quick level (n = 400, contrast
       // 1e3, width 0.05, hfact 2, t = 0.005: max |p - 1| = 1.077e-2, max |v| / c = 2.745e-2) + 20 %;
-      // the errors fall at second order beyond it (2.7e-3, 7.0e-3 at n = 800).
+      // the errors fall at second order beyond it.
       for (const auto& [name, measured] : {std::pair{"pressure_blip", 1.077e-2}, std::pair{"speed_over_c_dense", 2.745e-2}})
         c.push_back({level + "_" + name, r.errors.at(name), 0.0, 1.2 * measured,
                      "resolved contact: at most the error measured at n = 400 + 20 %", Check::Kind::verification, name});
@@ -167,8 +167,8 @@ const Registration reg{Case{
     .levels = {.quick = {16, 32}, .standard = {16, 32}, .full = {16, 32}},
     // The contact at rest converges once the kernel resolves it: with the jump smoothed over a
     // width w >> h the summation density misses the profile by O((h / w)^2) (the kernel's second
-    // moment times (ln rho)''), and so do the pressure blip and the motion it drives (measured at
-    // w = 0.05, hfact 2, n = 100..1600: local orders 1.96-2.00 and 1.74-1.99). hfact 2: the 1D
+    // moment times (ln rho)''), and so do the pressure blip and the motion it drives (measured
+    // local orders: docs/cases/extreme.md). hfact 2: the 1D
     // lattice sums are exact there; at 2.4 their error (2.7e-3 in the pressure at rest) floors
     // the blip from n = 1600. The jump itself (w = 0) stays unresolved at every n at fixed h/dx:
     // the light particles beside it sum the dense side's mass whatever n, a known failure with

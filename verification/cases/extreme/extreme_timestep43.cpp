@@ -113,8 +113,8 @@ const Registration reg{Case{
                real_param("hfact", 2.4, "support radius / spacing", 0.0),
                integer_param("max_steps", 100000, "step budget (ends with a verdict)")},
     // The Courant-stepped tube at hfact 2.4 carries the 1D lattice-sum floor (noh.cpp): L1 falls
-    // at first order to n = 200, then levels off (0.0240, 0.0134, 0.0107, 0.0110 on 100..800); at
-    // hfact 2, where the sums are exact, local orders 0.99, 0.90, 1.02. Quick from n = 200, where
+    // at first order to n = 200, then levels off; at hfact 2, where the sums are exact, it keeps
+    // the first order (docs/cases/extreme.md). Quick from n = 200, where
     // the floor shows, with two levels so that CI gates the claim.
     .levels = {.quick = {200, 400}, .standard = {200, 400, 800}, .full = {200, 400, 800, 1600}},
     .orders = [](const Params& p) {
