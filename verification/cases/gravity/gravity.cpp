@@ -234,9 +234,8 @@ std::vector<Check> gates(const Sweep& s) {
   // largest measured value at N <= 20000, and at N = 100000 over all five levels. The
   // quadrupole p99 bounds lie below the monopole's measured p99 at every theta and level (by 1.2x
   // at theta 0.8 up to 8x at 0.2), so a tree that drops the quadrupole term fails them. At other
-  // N, with another opening criterion
-  // (opening=plain) or softening nothing was measured: no bounds then, only the published
-  // numbers and the rates in theta below.
+  // N, with another opening criterion (opening=plain) or softening there is no measurement: no
+  // bounds then, only the published numbers and the rates in theta below.
   const bool measured = r.params.value("opening", std::string("robust")) == "robust" &&
                         r.params.value("eps", 0.0) == 0.01 && largest_measured.count(model);
   if (measured)
