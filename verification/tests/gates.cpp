@@ -96,11 +96,13 @@ void gate() {
   const OneThread one;
   const std::string test = Catch::getResultCapture().getCurrentTestName();
   const sphv::Case& c = sphv::find_case(test.substr(test.find(": ") + 2));
-  for (const auto& settings : c.variants) {
-    const sphv::Sweep s = sphv::run_tier(c, sphv::Tier::quick, settings);
-    INFO(describe(s));
-    CHECK(s.passed());
-    require_thread_independent(c, settings, s);
+  std::vector<sphv::Sweep> sweeps;
+  for (const auto& settings : c.variants) sweeps.push_back(sphv::run_tier(c, sphv::Tier::quick, settings));
+  sphv::check_experiments(sweeps);  // every known failure beside an experiment that verifies it
+  for (std::size_t k = 0; k < sweeps.size(); ++k) {
+    INFO(describe(sweeps[k]));
+    CHECK(sweeps[k].passed());
+    require_thread_independent(c, c.variants[k], sweeps[k]);
   }
 }
 

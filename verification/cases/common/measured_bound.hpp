@@ -1,5 +1,6 @@
 #pragma once
-// A bound on an error that converges at its claimed order, from one measurement: the error
+// A drift bound (the code's own earlier output, counted as a drift check, not as verification) on
+// an error that converges at its claimed order, from one measurement: the error
 // measured at level n0 times a stated margin, carried to the sweep's finest level n by the
 // claimed order, bound(n) = margin * e(n0) * (n0 / n)^p. The same bound then holds at any level
 // a tier (or --levels) chooses, and an error that falls more slowly than claimed still fails.
@@ -23,7 +24,7 @@ inline Check measured_bound(const Sweep& s, const std::string& error, double mea
   std::snprintf(text, sizeof text, "measured %.4g at n = %ld, margin %g%s", measured, n0, margin,
                 p != 0.0 ? ", carried to this n by the claimed order" : "");
   return {"bound_" + error, r.errors.at(error), 0.0, hi, why.empty() ? text : std::string(text) + "; " + why,
-          Check::Kind::verification, error};
+          Check::Kind::drift, error};
 }
 
 }  // namespace sphv

@@ -254,7 +254,7 @@ std::vector<Check> gates(const Sweep& s) {
           for (const char* what : {"p99", "max", "energy"}) {
             const std::string name = key(what, mp, theta);
             const double largest = n <= 20000 ? m[w][k] : std::max(m[w][k], m5[w][k]);
-            c.push_back({"bound_" + name + at, run.errors.at(name), 0.0, 1.5 * largest, source, v, name});
+            c.push_back({"bound_" + name + at, run.errors.at(name), 0.0, 1.5 * largest, source, Check::Kind::drift, name});
             ++w;
           }
           ++k;

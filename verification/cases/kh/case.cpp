@@ -100,7 +100,7 @@ std::vector<Check> gates(const Sweep& s) {
                  "at least 20 samples of M(t) in the fit window", Check::Kind::verification, "growth"});
     c.push_back({level + "_growth", r.errors.at("growth"), 0.0, bound,
                  "the growth rate within 1.5 times its largest error measured on the variant's quick and standard "
-                 "levels (kh/case.cpp)", Check::Kind::verification, "growth"});
+                 "levels (kh/case.cpp)", Check::Kind::drift, "growth"});
   });
 }
 
@@ -125,19 +125,20 @@ std::vector<Check> gates(const Sweep& s) {
 // it to the zeroth-order inconsistency; Tricco (2019, arXiv:1907.03935; on the
 // smooth set-up of Lecoanet et al. 2016) needs a high-order kernel to resolve the seed and keep
 // spurious modes down, and then converges.
-// Band 0.35 as gresho's: the experiment's measured local orders 0.77, 0.85 on n = 32, 64, 96.
+// Band 0.3 as gresho's: the experiment's measured local orders 0.77, 0.85 on n = 32, 64, 96.
 OrderClaims kh_orders(const Params& p) {
   OrderClaims c;
   const std::string first = "the kernel's smoothing of the layer (support comparable with its width L) and the "
                             "artificial viscosity's damping, nu ~ alpha c_s h: first order in h ~ 1/n at fixed hfact "
                             "while the zeroth-order (E0) force noise of the sheared lattice stays below them";
   if (converges(p)) {
-    c["growth"] = OrderClaim{1.0, 0.35, first + " (a Wendland kernel with many neighbours, Dehnen & Aly 2012)"};
+    c["growth"] = OrderClaim{1.0, 0.3, first + " (a Wendland kernel with many neighbours, Dehnen & Aly 2012)"};
     return c;
   }
   c["growth"] = known_failure(
-      1.0, 0.35,
-      "the E0 error of the momentum equation (23): the shear moves the lattice past itself, and at hfact = {extra.hfact} "
+      1.0, 0.3,
+      "the mode's amplitude M(t_end)/M(0) is {extra.M_end_over_M0} at {levels} (below 1 the mode decays instead of "
+      "growing); the cause is the E0 error of the momentum equation (23): the shear moves the lattice past itself, and at hfact = {extra.hfact} "
       "(the cubic spline's few neighbours) the pressure p0 drives force noise that does not fall with h and swamps or, "
       "damped by the viscosity (alpha = {extra.alpha}), outlasts the seed: growth rates {extra.growth_rate} at {levels} "
       "against the linear evolution's {extra.growth_rate_ref}, M at t_end {extra.M_last_over_linear} of the linear "

@@ -108,6 +108,8 @@ inline void growth_result(Result& r, const Params& p, const GrowthFit& f, const 
   r.extra["M_first"] = M.empty() ? 0.0 : M.front();
   r.extra["M_last"] = M.empty() ? 0.0 : M.back();
   r.extra["M_last_over_linear"] = M.empty() ? 0.0 : M.back() / M_lin.back();
+  // Below 1 the mode decays over the run instead of growing (the seed is damped or swamped).
+  r.extra["M_end_over_M0"] = M.empty() || M.front() == 0.0 ? 0.0 : M.back() / M.front();
   Series data{"SPH", {}, {}, t.size() > 50 ? "line" : "points"}, line{"linear evolution of the seed", {}, {}, "dashed"};
   const std::size_t stride = std::max<std::size_t>(1, t.size() / 400);
   for (std::size_t i = 0; i < t.size(); i += stride)

@@ -127,13 +127,13 @@ std::vector<Check> gates(const Sweep& s) {
 // The swept mass in 2D and 3D: two terms, the front's offset, O(h) of the radius, and the start-up,
 // where the inflow first meets itself in a ball a few h wide and any error of that phase misplaces
 // a mass O(h^d) of the ball's; the slope of their sum lies between 1 and d (1D: both first order,
-// and the planar flow brings no start-up ball). Claim: (1 + d) / 2 +- (d - 1) / 2.
+// and the planar flow brings no start-up ball). The sum's slope tends to the slower term's, so theory
+// bounds the order from below: at least 1.
 OrderClaims noh_orders(const Params& p) {
-  const OrderClaim first{1.0, 0.5, "shocks and the wall-heated zone are a few h wide: first order in h ~ 1/n"};
+  const OrderClaim first{1.0, 0.3, "shocks and the wall-heated zone are a few h wide: first order in h ~ 1/n"};
   if (const long d = p.integer("dim"); d > 1) {
-    const OrderClaim swept{0.5 * (1.0 + d), 0.5 * (d - 1.0),
-                           "the front's offset, first order in h, plus the start-up ball's misplaced mass, order d: "
-                           "the slope of the sum lies between"};
+    const OrderClaim swept = at_least(1.0, "the front's offset, first order in h, plus the start-up ball's misplaced "
+                                           "mass, order d: the slope of the sum lies between 1 and d");
     return {{"rho_post", first}, {"shock_speed", first}, {"swept_mass", swept}};
   }
   const double hfact = p.real("hfact");
@@ -142,13 +142,16 @@ OrderClaims noh_orders(const Params& p) {
                                   "{levels} is the integrator's energy error at a fixed Courant number C (a particle "
                                   "crosses the shock in the same number of steps at every n), bounded; it shrinks with C")},
             {"shock_speed", {1.0, 0.25, "the shock smeared over a few h: first order in h ~ 1/n"}},
-            {"swept_mass", {1.0, 0.5, "the shock smeared over a few h: first order in h ~ 1/n"}}};
+            {"swept_mass", {1.0, 0.3, "the shock smeared over a few h: first order in h ~ 1/n"}}};
   const std::string floor = "kernel lattice-sum floor at h/dx = hfact: the plateau sits at {extra.rho_post_measured} "
                             "at {levels}, where the lattice sums and the jump conditions predict "
                             "{extra.rho_post_lattice_sums} (exact: rho0 (gamma + 1) / (gamma - 1)), whatever n";
-  return {{"rho_post", known_failure(1.0, 0.5, floor, "hfact=2")},
-          {"shock_speed", known_failure(1.0, 0.5, floor, "hfact=2")},
-          {"swept_mass", known_failure(1.0, 0.5, floor, "hfact=2")}};
+  // The plateau's error has no limit in n at a fixed hfact and Courant number (the lattice floor plus
+  // the integrator's error, as at hfact 2): no order. The front's speed and swept mass converge
+  // where the sums are exact: the floor is the cause, hfact 2 the experiment.
+  return {{"rho_post", no_order(floor + "; at fixed hfact and Courant number the plateau's error has no limit in n")},
+          {"shock_speed", known_failure(first, floor, "hfact=2")},
+          {"swept_mass", known_failure(first, floor, "hfact=2")}};
 }
 
 // Levels: 1D two in quick (the order claims are gated in CI), three in standard. 2D: n = 100 costs

@@ -117,7 +117,7 @@ std::vector<Check> gates(const Sweep& s) {
   if (!s.runs.empty() && s.runs.back().errors.count("L1_rho")) {
     const double m = l1_measured(p);
     c.push_back({"n" + std::to_string(s.levels.back()) + "_L1_rho", s.runs.back().errors.at("L1_rho"), 0.0, 1.2 * m,
-                 "measured " + std::to_string(m) + " at the finest quick level + 20 %", Check::Kind::verification,
+                 "measured " + std::to_string(m) + " at the finest quick level + 20 %", Check::Kind::drift,
                  "L1_rho"});
   }
   return c;

@@ -75,7 +75,7 @@ std::vector<Check> gates(const Sweep& s) {
     const double tol = 1.2 * (preset == "toro2" ? 0.00667 : lattice_exact ? 0.0189 : 0.0252);
     c.push_back({level + "_L1_rho", r.errors.at("L1_rho"), 0.0, tol,
                  "L1(rho) against the exact Riemann solution (largest measured on 200..800 + 20 %)",
-                 Check::Kind::verification, "L1_rho"});
+                 Check::Kind::drift, "L1_rho"});
   }
   return c;
 }
@@ -99,21 +99,39 @@ const Registration reg{Case{
     // hold L1 at a level that does not fall with n; at hfact 2, where the 1D sums are exact, it
     // converges (docs/cases/sod.md).
     .orders = [](const Params& p) {
-      const OrderClaim first{1.0, 0.5, "discontinuities limit L1 convergence to first order"};
-      if (p.text("preset") == "toro3" && p.real("hfact") != 2.0 && p.real("hfact") != 4.0)
-        return OrderClaims{{"L1_rho", known_failure(1.0, 0.5,
-                                                    "fixed-h/dx lattice-sum floor behind the blast wave: L1 {L1_rho} "
-                                                    "at {levels} does not fall with n at this hfact",
-                                                    "preset=toro3,energy=38,hfact=2")}};
+      // A tube's L1: at least 0.74 (sod.cpp, why_first_order), where the kernel's 1D lattice sums are
+      // exact (hfact 2 or 4). At hfact 2.4 they are not (common/lattice_sums.hpp), and behind the
+      // shock or in the near-vacuum of toro2 the lattice keeps h/dx = hfact: L1 levels off at a
+      // floor set by hfact, not n; the same preset at hfact 2 is the experiment.
+      const OrderClaim first = at_least(0.74, "shock, contact and rarefaction smeared over a few h ~ 1/n: L1 at least "
+                                              "Athena++'s 0.74 (error ratio <= 0.6 per doubling)");
+      const bool exact_sums = p.real("hfact") == 2.0 || p.real("hfact") == 4.0;
+      if (p.text("preset") == "toro3")
+        // The left blast wave at hfact 2 falls at about one half on the affordable levels (its local
+        // orders in the report), a rate no theory here gives: its claim stays the former first-order
+        // one, provisional under the acceptance rule, until finer levels or a derivation settle it.
+        return OrderClaims{{"L1_rho", exact_sums ? OrderClaim{1.0, 0.5, "discontinuities limit L1 convergence to first order"}
+                                                 : known_failure(OrderClaim{1.0, 0.5, "discontinuities limit L1 convergence to first order"},
+                                                                 "fixed-h/dx lattice-sum floor behind the blast wave: L1 {L1_rho} "
+                                                                 "at {levels} does not fall with n at this hfact",
+                                                                 "preset=toro3,energy=38,hfact=2")}};
+      if (!exact_sums)
+        return OrderClaims{{"L1_rho", known_failure(first,
+                                                    "fixed-h/dx lattice-sum floor in the near-vacuum centre: L1 {L1_rho} "
+                                                    "at {levels} levels off at this hfact",
+                                                    "preset=toro2,hfact=2")}};
       return OrderClaims{{"L1_rho", first}};
     },
     .error_defs = {{"L1_rho", "sum_i (m_i/rho_i) |rho_i - rho_exact(x_i)| / sum_i m_i/rho_i over the tube at t_end "
                               "(exact Riemann solution)"}},
     // toro3 with (41) (energy=auto) goes to u < 0 in the first step (measured): not a gate variant.
-    .variants = {{"preset=toro2"}, {"preset=toro3", "energy=38"}, {"preset=toro3", "energy=38", "hfact=2"}},
+    .variants = {{"preset=toro2"}, {"preset=toro2", "hfact=2"}, {"preset=toro3", "energy=38"},
+                 {"preset=toro3", "energy=38", "hfact=2"}},
     .levels_for = [](const Params& p) {
       if (p.text("preset") == "toro3") return Levels{.quick = {400, 800}, .standard = {200, 400, 800}, .full = {200, 400, 800, 1600}};
-      return Levels{.quick = {200, 400}, .standard = {200, 400, 800}, .full = {200, 400, 800, 1600}};
+      // toro2 levels off from n = 800 at hfact 2.4 (the floor): the known failure needs it in quick.
+      if (p.real("hfact") != 2.0) return Levels{.quick = {400, 800, 1600}, .standard = {400, 800, 1600}, .full = {400, 800, 1600, 3200}};
+      return Levels{.quick = {400, 800}, .standard = {400, 800, 1600}, .full = {400, 800, 1600, 3200}};
     },
     .validate = {},
     .run = run,

@@ -292,8 +292,8 @@ std::vector<Check> tube_gates(const Sweep& s, int dim) {
     const double v = (*m)[e];
     c.push_back({name, fine.errors.at(name), floor ? floor_fraction * v : 0.0, bound_margin * v,
                  floor ? "(29) does not converge: between half and 1.2x the measured " + std::to_string(v)
-                       : "finest level: measured " + std::to_string(v) + " at the finest quick level + 20 %",
-                 Check::Kind::verification, name});
+                       : "finest level: measured " + std::to_string(v) + " at n = " + (dim == 1 ? "800" : "the finest quick level") + " + 20 %",
+                 Check::Kind::drift, name});
   }
   if (dim > 1 && !lattice_floor(p, dim) && s.runs.size() >= 2 && fine.errors.count("L1_rho") &&
       s.runs.front().errors.count("L1_rho"))
@@ -305,34 +305,51 @@ std::vector<Check> tube_gates(const Sweep& s, int dim) {
   return c;
 }
 
+// A tube's L1 error sums the shock's and the contact's smearing over a few h (first order in h ~
+// 1/n: width h times the jump) and the rarefaction's smooth error (faster): asymptotically first
+// order, approached from below while the contact's start-up error (the wall-heating blip the
+// first steps leave) still weighs. Theory bounds the order from below, not to a rate: the claim is
+// "at least 0.74", Athena++'s regression gate for Sod (an error ratio <= 0.6 per doubling).
 const char* const why_first_order =
-    "shock and contact are smeared over a fixed number of particles (width ~ h ~ 1/n), so their L1 "
-    "contribution is O(1/n); the smooth rarefaction converges faster but the discontinuities limit the "
-    "total to first order (grid codes: the same, Athena++ gates ratio <= 0.6 per doubling)";
+    "shock and contact are smeared over a few h ~ 1/n, an O(1/n) L1 contribution each, and the smooth "
+    "rarefaction converges faster: the order is at least the shock's and contact's, approached from below "
+    "while the contact's start-up error weighs; gated as at least 0.74, Athena++'s error ratio <= 0.6 per doubling";
 
-// Band 0.5 around the expected 1: the 1D variants' orders on the quick levels measure 0.51 (L1_v,
-// visc_h=full) to 0.90 (docs/cases/sod.md), and the band excludes a non-converging error (order 0,
-// as (29) shows). The levels are pre-asymptotic: the start-up error at the contact makes the
-// local slope of L1_v and L1_u rise towards 1 only across n = 100..1600.
+const char* const why_former =
+    "shock and contact are smeared over a few h ~ 1/n, an O(1/n) L1 contribution each: first order, the "
+    "former claim 1 +- 0.5 kept until the levels reach the asymptotic range";
+
 OrderClaims first_order(const Params& p, int dim) {
   if (p.text("timestep") == "chapter") return {};  // unstable at every level: no errors
-  OrderClaim claim{1.0, 0.5, why_first_order};
+  // The 2D and 3D tubes fall at 0.6 to 0.8 on their affordable levels (local orders in the report):
+  // they keep the former first-order claim, provisional under the acceptance rule, until levels
+  // that reach 1D's asymptotic range are affordable.
+  OrderClaim claim = dim == 1 ? at_least(0.74, why_first_order) : OrderClaim{1.0, 0.5, why_former};
   // (29) is the Eulerian rate d(rho)/dt + v . grad rho: wrong by v . grad rho wherever a
   // density gradient moves (the contact), an O(1) error that does not converge (order about 0):
   // the claim every tube makes fails, and the default summation (27)
   // on the same tube is the experiment that converges.
   if (p.text("density") == "continuity29")
-    claim = known_failure(1.0, 0.5,
+    claim = known_failure(claim,
                           "(29) is the Eulerian rate: wrong by v . grad rho at the moving contact, an O(1) error that "
                           "does not converge (L1_rho {L1_rho} at {levels}, order {order.L1_rho}); gated to stay above "
                           "a floor (half its measured value)",
                           "density=summation");
+  else if (p.text("euler") == "22")
+    // (22) weighs p_j alone: the force of i on j is not that of j on i, momentum is not conserved,
+    // and across the shock the discrete jump conditions are not the exact ones, an error at the
+    // shock that does not vanish with h. The symmetric (23) on the same tube is the experiment.
+    claim = known_failure(claim,
+                          "(22) is not antisymmetric in i and j: momentum is not conserved and the shock's discrete jump "
+                          "conditions miss the exact ones, an error that does not vanish with h (L1_p {L1_p}, L1_u {L1_u} "
+                          "at {levels}; orders {order.L1_p}, {order.L1_u})",
+                          "euler=23");
   else if (lattice_floor(p, dim))
     // The tube's lattices keep h/dx = hfact on either side and, behind the shock and in the
     // rarefaction, an anisotropically compressed lattice whose sums are further off: the errors
     // stop falling at a level set by hfact, not n. The variant at hfact 4 (sums within 0.1 %)
     // converges.
-    claim = known_failure(1.0, 0.5,
+    claim = known_failure(claim,
                           "fixed-h/dx lattice-sum floor: on the initial lattice at this hfact the kernel's density sum "
                           "is off by {extra.lattice_S0_minus_1} and the pressure force's momentum flux by "
                           "{extra.lattice_S1_minus_1} (more on the lattice compressed behind the shock), whatever n; "
@@ -340,7 +357,11 @@ OrderClaims first_order(const Params& p, int dim) {
                           "hfact=4");
   if (!measured(p, dim))
     claim = no_order("settings outside the catalogue's variants: no measured bound, only the verdict is gated");
-  return {{"L1_rho", claim}, {"L1_v", claim}, {"L1_p", claim}, {"L1_u", claim}};
+  OrderClaims c{{"L1_rho", claim}, {"L1_v", claim}, {"L1_p", claim}, {"L1_u", claim}};
+  // (22)'s velocity error converges at the claimed order on every tier's levels (its local orders
+  // are in the report): only the errors that level off carry the known failure.
+  if (p.text("euler") == "22" && claim.known_failure()) c["L1_v"] = at_least(0.74, why_first_order);
+  return c;
 }
 
 Case make_case(int dim) {
@@ -369,7 +390,9 @@ Case make_case(int dim) {
                        std::to_string(dim) + "D the energy form is the Euler form's partner (energy=auto)");
   };
   if (dim == 1) {
-    c.levels = {.quick = {200, 400, 800}, .standard = {100, 200, 400, 800, 1600}, .full = {100, 200, 400, 800, 1600}};
+    // From n = 400: below it the contact's start-up error holds the local orders of L1_v and L1_u
+    // under 0.8 (docs/cases/sod.md); 1D costs a few seconds at 3200.
+    c.levels = {.quick = {400, 800, 1600}, .standard = {400, 800, 1600, 3200}, .full = {400, 800, 1600, 3200, 6400}};
     c.variants = {{},
                   {"density=continuity33"},
                   {"density=continuity29"},

@@ -156,7 +156,7 @@ std::vector<Check> gates(const Sweep& s) {
     const double l1 = r.errors.at("L1_v");
     c.push_back({level + "_L1_v", l1, 0.0, l1_bound,
                  "L1_v below 1.5 times its value measured at the variant's coarsest quick level (sound_wave.cpp)",
-                 Check::Kind::verification, "L1_v"});
+                 Check::Kind::drift, "L1_v"});
     // The reference's neglected steepening against the measured error: at most a tenth of it.
     c.push_back({level + "_linear", r.extra.value("nonlinear_error_estimate", 0.0) / l1, 0.0, 0.1,
                  "the linear reference's neglected steepening (gamma + 1)/2 A k c_s t at most a tenth of L1_v",
@@ -182,7 +182,7 @@ std::vector<Check> gates(const Sweep& s) {
     if (r.errors.count("damping"))
       c.push_back({level + "_damping", r.errors.at("damping"), 0.0, damping_bound,
                    "the viscous decay rate within 1.5 times its error measured at the coarsest quick level of its "
-                   "prediction nu k^2 / 4", Check::Kind::verification, "damping"});
+                   "prediction nu k^2 / 4", Check::Kind::drift, "damping"});
   });
 }
 
