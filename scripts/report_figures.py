@@ -7,7 +7,6 @@ Computer Modern at 8 pt and more, the family of the document; the bundle include
 Fonts are embedded as TrueType (pdf.fonttype 42): no Type 3 font, which journal preflight checks
 reject. Labels carry their formulas as mathtext (report_math)."""
 import logging
-import re
 
 import matplotlib
 
