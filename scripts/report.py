@@ -24,7 +24,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 import report_figures as figs  # noqa: E402
 import report_kernels  # noqa: E402
 from report_data import (OUTCOMES, claim_notes, counts, errors_of, expected_text, file_of, fmt, is_dirty, load, num, order_text,  # noqa: E402
-                         provenances, read_json, row_note, row_reason, slug, sweep_wide_failures, threads_text)
+                         provenances, read_json, row_note, row_reason, slug, sweep_wide_failures, threads_text, variant_named)
 
 ROOT = Path(__file__).resolve().parent.parent
 CSS = """body{font-family:sans-serif;max-width:1250px;margin:auto;padding:0 12px;line-height:1.35}
@@ -354,7 +354,6 @@ def case_page(case, ss, results, out, made, copy=True):
     body.append("<h2>Figures</h2><p>Per variant its profiles (finest run) and the convergence of each error with an order "
                 "claim; errors without one are tabulated per level. Then each error against run time and the kernel "
                 "comparison. Each figure links its vector PDF.</p>")
-    variants = {v["variant"] for v in ss}
     for s in ss:
         v = slug(s["variant"])
         body.append(f"<h3 id='{figures_anchor(s['variant'])}'>{e(s['variant'])}</h3><div class='figs'>")
@@ -368,8 +367,10 @@ def case_page(case, ss, results, out, made, copy=True):
             stem = figs.convergence(case, s, row, figdir / f"{v}_{slug(row['error'])}_convergence") if num(row.get("expected")) else None
             if stem:
                 made.append((case, s, row["error"], "convergence", stem))
-                exp = row.get("experiment") if row["outcome"] == "known failure" else None
-                link = (f" <a href='#{e(figures_anchor(exp))}'>converges instead: {e(exp)}</a>" if exp in variants else
+                exp = (row.get("experiment") or s.get("claims", {}).get(row["error"], {}).get("experiment")
+                       if row["outcome"] == "known failure" else None)
+                target = variant_named(ss, exp, besides=s) if exp else None
+                link = (f" <a href='#{e(figures_anchor(target['variant']))}'>converges instead: {e(exp)}</a>" if target else
                         f" (converges instead: {e(exp)})" if exp else "")
                 body.append(figure_html(out, stem, f"{row['error']}{definition([s], row['error'])} against n "
                                                    f"({s.get('n_counts', 'resolution')}), {s['variant']}: {row['outcome']}",

@@ -22,8 +22,8 @@ OPS = {"<=": r"\le ", ">=": r"\ge ", "!=": r"\ne ", "==": "=", "*": r"\,", "~": 
 # a two-character operator, one character.
 TOKEN = re.compile(r"(?P<dim>\d[Dd]\b)|(?P<id>[A-Za-z][A-Za-z0-9]*(?:_[A-Za-z0-9]+(?:,[A-Za-z0-9](?![A-Za-z0-9]))?)*)"
                    r"|(?P<num>\d+(?:\.\d+)?(?:e[-+]?\d+)?)|(?P<op><=|>=|!=|==|\+-|->)|(?P<sp>\s+)|(?P<ch>.)", re.S)
-MATH_CH = set("=<>+-*/^|()[]")
-SPECIALS = {"\\": r"\textbackslash{}", "^": r"\^{}", "~": r"\~{}", "<": r"$<$", ">": r"$>$", "|": r"$|$"}
+MATH_CH = set("=<>+-*/^|()[]~")
+SPECIALS = {"\\": r"\textbackslash{}", "^": r"\^{}", "~": r"$\sim$", "<": r"$<$", ">": r"$>$", "|": r"$|$"}
 UNICODE_MATH = {"±": r"\pm", "×": r"\times", "≤": r"\le", "≥": r"\ge", "−": "-", "≈": r"\approx", "∞": r"\infty",
                 "²": "^2", "³": "^3", "·": r"\cdot", "∫": r"\int", "∑": r"\sum", "√": r"\surd", "∇": r"\nabla", "∂": r"\partial"}
 

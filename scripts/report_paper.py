@@ -6,7 +6,7 @@ the hydrodynamics cases with each known failure beside the experiment that conve
 
 The numbers are the harness's: the window of a claim is the acceptance interval its order check
 recorded in sweep.json (or a "window" the row or the claim carries), never one computed here."""
-from report_data import OUTCOMES, f2, num, series
+from report_data import OUTCOMES, f2, num, series, variant_named
 import re
 
 import report_figures as figs
@@ -57,7 +57,7 @@ def experiment(ss, s, row):
     name = row.get("experiment") or s.get("claims", {}).get(row["error"], {}).get("experiment")
     if not name:
         return None, None
-    v = next((v for v in ss if v["variant"] == name), None)
+    v = variant_named(ss, name, besides=s)
     r = next((r for r in v["rows"] if r["error"] == row["error"]), None) if v else None
     return v, r
 
@@ -217,7 +217,8 @@ def curve(s, row):
     if not pts:
         return None
     n, y = zip(*pts)
-    return {"label": mathtext(s["variant"] if len(s["variant"]) <= 14 else s["variant"][:13] + "..."), "variant": s["variant"],
+    # A long variant name would fill a narrow panel: the caption names it.
+    return {"label": mathtext(s["variant"]) if len(s["variant"]) <= 14 else "experiment", "variant": s["variant"],
             "n": n, "y": y, "observed": row.get("observed"), "se": row.get("se"), "outcome": row["outcome"],
             "expected": row.get("expected"), "error": row["error"]}
 
