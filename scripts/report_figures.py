@@ -118,7 +118,7 @@ def convergence(case, s, row, stem):
     ax.set_ylabel(mathtext(e))  # the error's definition is in the caption
     ax.legend()
     ax.grid(True, which="both", alpha=0.3)
-    return save(fig, stem, left=0.19, bottom=0.17, top=0.97)
+    return save(fig, stem, left=0.23, bottom=0.17, top=0.97)  # room for minor labels (2 x 10^-2) beside the label
 
 
 def wall_time(case, ss, error, stem):
@@ -147,7 +147,7 @@ def wall_time(case, ss, error, stem):
     if drawn <= 6:  # more variants than that: the legend would hide the lines; the case page lists them
         ax.legend(fontsize=8 if drawn <= 3 else 6.5)
     ax.grid(True, which="both", alpha=0.3)
-    return save(fig, stem, left=0.19, bottom=0.16, top=0.97)
+    return save(fig, stem, left=0.23, bottom=0.16, top=0.97)
 
 
 def run_figure(f, stem):
@@ -249,7 +249,7 @@ def profiles(panels, stem, height=1.85):
     same = len({tuple(n for n, _ in p["runs"]) for p in panels}) == 1
     for ax, p in zip(axes[0], panels):
         colours = LEVEL_COLOURS[-len(p["runs"]):]
-        ranks = ("coarse", "middle", "fine")[-len(p["runs"]):] if len(p["runs"]) > 1 else ("fine",)
+        ranks = {1: ("fine",), 2: ("coarse", "fine")}.get(len(p["runs"]), ("coarse", "middle", "fine"))
         exact = None
         for (n, f), colour, rank in zip(p["runs"], colours, ranks):
             for srs in f["series"]:

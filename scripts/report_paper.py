@@ -182,7 +182,8 @@ def radial_figure(sweeps, figdir):
         cite = {"sedov": r"\citep{sedov1959}", "noh": r"\citep{noh1987}"}.get(case, "")
         parts.append(f"{prose(case.capitalize())} ({prose(p['s']['variant'])} variant, $n = {lv}$, "
                      f"{latex(p['s'].get('n_counts', ''))}) against its exact solution {cite}")
-    return stem, ("Radial profiles at the end time, particles coarse to fine in orange, green, blue: " + "; ".join(parts)
+    return stem, ("Radial profiles at the end time, particles coarse to fine in orange, green, blue (green and blue where a "
+                  "case ran two levels): " + "; ".join(parts)
                   + r". Radii in units of the panels' axes. Errors and orders: Table~\ref{tab:verification}.")
 
 
