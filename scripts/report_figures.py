@@ -15,7 +15,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import matplotlib.ticker  # noqa: E402
 import numpy as np  # noqa: E402
 
-from report_data import claim, file_of, num, series, wrap  # noqa: E402
+from report_data import claim, file_of, num, series  # noqa: E402
 from report_math import mathtext  # noqa: E402
 
 COLUMN, PAGE = 84 / 25.4, 174 / 25.4  # inches
@@ -124,7 +124,9 @@ def convergence(case, s, row, stem):
 def wall_time(case, ss, error, stem):
     """Error against the wall time of each run, one line per variant that reports the error (none
     when no variant has two points)."""
-    fig, ax = plt.subplots(figsize=(COLUMN, 2.6))
+    lines = sum(any(num(r.get("errors", {}).get(error)) for r in s["runs"]) for s in ss)
+    extra = 0.16 * lines  # the legend below the axes, one variant a line
+    fig, ax = plt.subplots(figsize=(COLUMN, 2.3 + extra))
     drawn = longest = 0
     for k, s in enumerate(ss):
         pts = [(run.get("wall_time_s"), run.get("errors", {}).get(error), n) for n, run in zip(s["levels"], s["runs"])]
@@ -134,7 +136,7 @@ def wall_time(case, ss, error, stem):
         longest = max(longest, len(pts))
         t, y, n = zip(*pts)
         outcome = next((r["outcome"] for r in s["rows"] if r["error"] == error), "no claim")
-        ax.loglog(t, y, "o-", color=f"C{k % 10}", ms=3, lw=0.8, label=f"{s['variant']} ({outcome})")
+        ax.loglog(t, y, "o-", color=f"C{k % 10}", ms=3, lw=0.8, label=mathtext(f"{s['variant']} ({outcome})"))
         if len(ss) <= 3:  # which level each point is: timings of small runs are noisy
             for tx, ty, nx in pts:
                 ax.annotate(f"${nx:g}$", (tx, ty), textcoords="offset points", xytext=(3, 2), fontsize=8, color=f"C{k % 10}")
@@ -144,10 +146,10 @@ def wall_time(case, ss, error, stem):
         return None
     ax.set_xlabel("wall time of the run [s]")
     ax.set_ylabel(mathtext(error))
-    if drawn <= 6:  # more variants than that: the legend would hide the lines; the case page lists them
-        ax.legend(fontsize=8 if drawn <= 3 else 6.5)
+    height = 2.3 + extra
+    fig.legend(*ax.get_legend_handles_labels(), loc="lower left", bbox_to_anchor=(0.0, 0.0), frameon=False, fontsize=8)
     ax.grid(True, which="both", alpha=0.3)
-    return save(fig, stem, left=0.23, bottom=0.16, top=0.97)
+    return save(fig, stem, left=0.23, bottom=(0.45 + extra) / height, top=1 - 0.08 / height)
 
 
 def run_figure(f, stem):
@@ -184,51 +186,57 @@ def run_figure(f, stem):
 
 
 def kernels(case, label, members, errors, stem):
-    """The kernel comparison of one group (report_kernels.py): per error (a column), the error
-    against n (top, the observed order's slope) and against the wall time of each run (bottom,
-    the fixed cost marked by a dotted line), one line per kernel."""
+    """The kernel comparison of one group (report_kernels.py): per error, the error against n (the
+    observed order's slope) and below it against the wall time of each run (the fixed cost marked
+    by a dotted line), one line per kernel; at most three errors across the page, further ones in
+    further pairs of rows."""
     import report_kernels as rk  # noqa: E402 (the figures module stays free of the comparison's logic)
     if not errors:
         return None
-    cols = len(errors)
-    width = max(5.6, 3.0 * cols + 0.8)
-    fig, axes = plt.subplots(2, cols, figsize=(width, 5.6), squeeze=False)
+    cols = min(3, len(errors))
+    pairs = -(-len(errors) // cols)
+    height = 0.9 + 3.1 * pairs
+    fig, axes = plt.subplots(2 * pairs, cols, figsize=(PAGE, height), squeeze=False)
+    for j in range(len(errors), pairs * cols):
+        axes[2 * (j // cols)][j % cols].set_visible(False)
+        axes[2 * (j // cols) + 1][j % cols].set_visible(False)
     drawn = 0
     for j, err in enumerate(errors):
+        top, bottom = axes[2 * (j // cols)][j % cols], axes[2 * (j // cols) + 1][j % cols]
         n_fixed, t_fixed, _ = rk.comparison(members, err)
         for k, (kernel, s) in enumerate(members):
             pts = rk.points(s, err)
             if not pts:
                 continue
             n, t, y = zip(*pts)
-            style = dict(color=f"C{k % 10}", marker="os^vDP"[k % 6], ms=4, lw=0.8, label=kernel)
-            axes[0][j].loglog(n, y, **style)
-            axes[1][j].loglog(t, y, **style)
+            style = dict(color=f"C{k % 10}", marker="os^vDP"[k % 6], ms=3, lw=0.8, label=mathtext(kernel))
+            top.loglog(n, y, **style)
+            bottom.loglog(t, y, **style)
             drawn += 1
         if n_fixed is not None:
-            axes[0][j].axvline(n_fixed, color="0.5", ls=":", lw=0.8)
+            top.axvline(n_fixed, color="0.5", ls=":", lw=0.8)
         if t_fixed is not None:
-            axes[1][j].axvline(t_fixed, color="0.5", ls=":", lw=0.8)
+            bottom.axvline(t_fixed, color="0.5", ls=":", lw=0.8)
         levels = sorted({p[0] for _, s in members for p in rk.points(s, err)})
-        axes[0][j].set_xticks(levels, [f"{v:g}" for v in levels])  # the levels themselves
-        axes[0][j].set_title(err)
-        axes[0][j].set_xlabel("n")
-        axes[1][j].set_xlabel("wall time of the run [s]")
-        axes[0][j].xaxis.set_minor_formatter(matplotlib.ticker.NullFormatter())
+        level_ticks(top, levels)
+        top.set_title(mathtext(err))
+        top.set_xlabel("$n$", labelpad=1)
+        bottom.set_xlabel("wall time of the run [s]", labelpad=1)
         # Wall times in plain numbers at 1, 2, 5 per decade: narrow panels have no room for more.
-        axes[1][j].xaxis.set_major_locator(matplotlib.ticker.LogLocator(subs=(1.0, 2.0, 5.0)))
-        axes[1][j].xaxis.set_major_formatter(matplotlib.ticker.FuncFormatter(lambda v, _: f"{v:g}"))
-        axes[1][j].xaxis.set_minor_formatter(matplotlib.ticker.NullFormatter())
-        for ax in axes[:, j]:
+        bottom.xaxis.set_major_locator(matplotlib.ticker.LogLocator(subs=(1.0, 2.0, 5.0)))
+        bottom.xaxis.set_major_formatter(matplotlib.ticker.FuncFormatter(lambda v, _: f"{v:g}"))
+        bottom.xaxis.set_minor_formatter(matplotlib.ticker.NullFormatter())
+        for ax in (top, bottom):
             ax.grid(True, which="both", alpha=0.3)
+        if j % cols == 0:
+            top.set_ylabel("error against $n$")
+            bottom.set_ylabel("error against cost")
     if not drawn:
         plt.close(fig)
         return None
-    axes[0][0].set_ylabel("error against n")
-    axes[1][0].set_ylabel("error against cost")
-    axes[0][0].legend(fontsize=6)
-    fig.suptitle(wrap(f"{case} [{label}]: kernels compared (dotted: the fixed resolution and the fixed cost)", int(13 * width)), fontsize=9)
-    return save(fig, stem, left=0.85 / width, right=0.98, bottom=0.09, top=0.88, wspace=0.35, hspace=0.38)
+    handles, labels = axes[0][0].get_legend_handles_labels()
+    fig.legend(handles, labels, loc="upper center", ncol=min(len(labels), 4), frameon=False, bbox_to_anchor=(0.5, 1.0 - 0.05 / height))
+    return save(fig, stem, left=0.115, right=0.99, bottom=0.45 / height, top=1.0 - 0.62 / height, wspace=0.4, hspace=0.5)
 
 
 LEVEL_COLOURS = ("#e6a024", "#3a9e6e", "#1f4e9c")  # coarse to fine: orange, green, blue (told apart in grey too)
