@@ -159,7 +159,7 @@ def tube_figure(sweeps, figdir):
     when = re.search(r"(\d)D\b.*\bt = ([0-9.eE+-]+)", title)
     where = f"{when.group(1)}D, $t = {float(when.group(2)):g}$" if when else ""
     return stem, (f"Sod shock tube ({prose(s['variant'])} variant{'; ' + where if where else ''}): the particles at "
-                  f"$n = {lv}$ ({latex(s.get('n_counts', ''))}; coarse to fine: orange, green, blue) against the exact "
+                  f"$n = {lv}$ ({latex(s.get('n_counts', ''))}; coarse to fine: orange, green, blue, or green and blue for two) against the exact "
                   r"Riemann solution \citep{toro2009} (black) at the end time. Errors and orders: Table~\ref{tab:verification}.")
 
 
@@ -262,9 +262,9 @@ def section(sweeps, figdir, copy, provenance_sentence):
          r"% Figures are drawn at print size (84 mm column, 174 mm page) and included unscaled: their text prints at 8 pt.",
          r"\section{Verification}\label{sec:verification}",
          provenance_sentence +
-         r"Each case compares the SPH result with a reference independent of the code: an exact solution (Sod, "
-         r"\citealt{toro2009}; Sedov--Taylor, \citealt{sedov1959}; Noh, \citealt{noh1987}; Gresho--Chan, "
-         r"\citealt{gresho1990}), a linear theory (sound waves; the Kelvin--Helmholtz growth of \citealt{mcnally2012}), "
+         r"Each case compares the SPH result with a reference independent of the code: an exact solution (Sod's "
+         r"shock tube, \citealt{toro2009}; the Sedov--Taylor blast, \citealt{sedov1959}; Noh's implosion, "
+         r"\citealt{noh1987}; the Gresho--Chan vortex, \citealt{gresho1990}), a linear theory (sound waves; the Kelvin--Helmholtz growth of \citealt{mcnally2012}), "
          r"an independent solver (a 1D Lagrangian code for the collapse of \citealt{evrard1988}; SUNDIALS for heat "
          r"conduction), a direct summation (gravity) or a quadrature (kernels, \citealt{dehnen2012}). The equations are "
          r"those of \citet{chapter}.",

@@ -132,7 +132,7 @@ def provenance_text(sweeps, tier):
     return (f"Every number in this section was produced by sphv at commit \\texttt{{{prose(', '.join(c[:12] for c in commits))}}}"
             + (" (mixed commits)" if len(commits) > 1 else "")
             + (r" \textbf{from a tree with uncommitted changes}" if any(is_dirty(q) for q in provs) else "")
-            + f", built by {prose(p.get('compiler', ''))}, on {prose(p.get('cpu', ''))} with {threads_tex(provs)}, "
+            + f", built with {prose(p.get('compiler', ''))}, on {prose(p.get('cpu', ''))} with {threads_tex(provs)}, "
             f"tier {prose(tier)}; \\texttt{{reproduce.sh}} in the bundle re-runs it from the source it carries "
             r"(provenance and tool versions: supplement). ")
 
