@@ -328,6 +328,7 @@ EXAMPLE_SUPPLEMENT = r"""% The supplement as a document of its own: contents, th
 \tableofcontents
 \clearpage
 \input{verification-supplement}
+\clearpage\addcontentsline{toc}{section}{References}
 \input{verification-supplement-references}
 \end{document}
 """
