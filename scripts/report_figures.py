@@ -91,7 +91,7 @@ def level_ticks(ax, n):
 
 
 def order_label(p, se):
-    return f"$p = {p:.2f}" + (f" \\pm {se:.2f}$" if num(se) else "$")
+    return (f"$p = {p:.2f}" + (f" \\pm {se:.2f}$" if num(se) else "$")).replace("-0.00", "0.00")
 
 
 def convergence(case, s, row, stem):

@@ -14,8 +14,8 @@ from report_math import error_name, latex, mathtext, prose
 
 TUBE = ("sod", (("profile_rho", "density $\\rho$"), ("profile_v", "velocity $v_x$"), ("profile_p", "pressure $p$"),
                 ("profile_u", "specific internal energy $u$")))
-RADIAL = (("sedov", "profile_rho", "Sedov: density $\\rho$"), ("sedov", "profile_v", "Sedov: radial velocity $v_r$"),
-          ("noh", "profile_rho", "Noh: density $\\rho$"), ("noh", "profile_u", "Noh: specific internal energy $u$"))
+RADIAL = (("sedov", "profile_rho", "Sedov: density $\\rho$"), ("sedov", "profile_v", "Sedov: velocity $v_r$"),
+          ("noh", "profile_rho", "Noh: density $\\rho$"), ("noh", "profile_u", "Noh: internal energy $u$"))
 # The cases of the convergence figure, in this order, then other cases with a verified claim over
 # three levels or more, up to PANELS panels.
 CONVERGENCE = ("sod", "sedov", "noh", "sound_wave", "gresho", "kh", "evrard", "square")
@@ -120,10 +120,10 @@ def table_line(case, ss):
     if row["outcome"] == "known failure":
         v, r = experiment(ss, s, row)
         if r is not None:
-            outcome += (f"; \\texttt{{{prose(v['variant'])}}}: ${f2(r['observed'])}$" if num(r.get("observed")) else
-                        f"; \\texttt{{{prose(v['variant'])}}}") + ("" if r["outcome"] == "verified" else f" ({SHORT[r['outcome']]})")
+            outcome += (f"; {prose(v['variant'])}: ${f2(r['observed'])}$" if num(r.get("observed")) else
+                        f"; {prose(v['variant'])}") + ("" if r["outcome"] == "verified" else f" ({SHORT[r['outcome']]})")
     return (f"{name} & {error_name(row['error'])} & {levels_tex(s)} & {expected_tex(row)} & {window_tex(s, row)} & "
-            f"{order_tex(row)} & \\parbox[t]{{3.3cm}}{{\\raggedright {outcome}}} \\\\")
+            f"{order_tex(row)} & \\parbox[t]{{3.1cm}}{{\\raggedright {outcome}}} \\\\")
 
 
 def table(sweeps):
@@ -235,7 +235,7 @@ def convergence_figure(sweeps, figdir):
             "the claimed order through the finest point. Filled blue: verified; open purple, dashed: a known failure")
     if known:
         text += (", drawn beside the variant that converges instead (" + "; ".join(
-            f"{prose(p['case'])}: \\texttt{{{prose(p['curves'][1]['variant'])}}}" for p in known) + ")")
+            f"{prose(p['case'])}: {prose(p['curves'][1]['variant'])}" for p in known) + ")")
     return stem, text + ". What $n$ counts per case: supplement."
 
 
