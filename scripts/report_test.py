@@ -171,6 +171,12 @@ def bundle_checks(results, work, sweeps):
             expect(f"[{lo:.2f}, {hi:.2f}]" in lines[0], f"Table 1: {case} does not show the window [{lo:.2f}, {hi:.2f}] its order check recorded")
     expect(r"\includegraphics{figures/paper_paper_convergence" in main_tex, "verification.tex has no convergence figure")
     expect(os.access(work / "bundle" / "reproduce.sh", os.X_OK), "reproduce.sh is not executable")
+    # Provenance with the tool versions and the bundle's time; the references the issue names.
+    expect({"Python", "python3-matplotlib", "libeigen3-dev", "libsundials-dev", "libhdf5-dev", "pdflatex"} <= set(prov.get("tools", {}))
+           and prov.get("bundle_time"), f"provenance.json lacks tool versions or the bundle's time: {sorted(prov)}")
+    refs = (work / "bundle" / "verification-supplement-references.tex").read_text()
+    for key in ("chapter", "toro2009", "sedov1959", "noh1987", "evrard1988", "gresho1990", "mcnally2012", "dehnen2012"):
+        expect(f"]{{{key}}}" in refs, f"the supplement's bibliography lacks {key}")
     supp = (work / "bundle" / "verification-supplement.tex").read_text()
     included = re.findall(r"\\includegraphics(?:\[[^]]*\])?\{figures/([^}]*)\}", supp)
     shared = sorted({f for f in included if included.count(f) > 1})
