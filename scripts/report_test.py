@@ -161,7 +161,7 @@ def bundle_checks(results, work, sweeps):
     for case in {s["case"] for s in sweeps}:
         lines = [line for line in table.splitlines() if line.startswith(report_math.prose(case) + " &")]
         expect(len(lines) == 1, f"Table 1 has {len(lines)} lines for {case}")
-        default = next(s for s in sweeps if s["case"] == case and s["variant"] == "default")
+        default = min((s for s in sweeps if s["case"] == case), key=lambda s: (s["variant"] != "default", s["variant"]))  # as load() orders
         row = report_paper.headline(default)
         if lines and row and row["outcome"] == "known failure":
             v, r = report_paper.experiment([s for s in sweeps if s["case"] == case], default, row)
