@@ -232,7 +232,8 @@ def convergence_figure(sweeps, figdir):
     known = [p for p in panels if len(p["curves"]) > 1]
     text = ("Convergence of the headline error of each hydrodynamics case (default variant; Table~\\ref{tab:verification}) "
             "against resolution $n$: points as measured, lines the least-squares fits with the observed order $p$, dotted "
-            "the claimed order through the finest point. Filled blue: verified; open purple, dashed: a known failure")
+            "the claimed order through the finest point. Filled blue: verified; brown: no order claimed; red: fail; open purple, "
+            "dashed: a known failure")
     if known:
         text += (", drawn beside the variant that converges instead (" + "; ".join(
             f"{prose(p['case'])}: {prose(p['curves'][1]['variant'])}" for p in known) + ")")
