@@ -233,3 +233,20 @@ def wrap(text, width):
         else:
             line = f"{line} {word}".strip()
     return "\n".join(lines + [line])
+
+
+def settings_set(name):
+    """A variant's name ("kernel=wendland_c4,hfact=4.5") as its set of settings."""
+    return frozenset(x.strip() for x in str(name).split(",") if x.strip() and x.strip() != "default")
+
+
+def variant_named(ss, name, besides=None):
+    """The sweep of ss that a known failure's experiment names: the same settings in any order,
+    else the variant (other than besides) whose settings are the most of the named ones (a name may
+    spell out a default, "preset=toro3,energy=38,hfact=2" for the variant "energy=38,hfact=2")."""
+    want = settings_set(name)
+    exact = next((s for s in ss if settings_set(s["variant"]) == want), None)
+    if exact or not want:
+        return exact
+    subsets = [s for s in ss if s is not besides and settings_set(s["variant"]) < want]
+    return max(subsets, key=lambda s: len(settings_set(s["variant"])), default=None)

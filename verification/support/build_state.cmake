@@ -6,7 +6,13 @@ execute_process(COMMAND git rev-parse HEAD WORKING_DIRECTORY ${SRC}
                 OUTPUT_VARIABLE commit OUTPUT_STRIP_TRAILING_WHITESPACE ERROR_QUIET RESULT_VARIABLE no_git)
 execute_process(COMMAND git status --porcelain --untracked-files=all -- sph reference verification CMakeLists.txt
                 WORKING_DIRECTORY ${SRC} OUTPUT_VARIABLE changes OUTPUT_STRIP_TRAILING_WHITESPACE ERROR_QUIET)
-if(no_git OR NOT commit)
+if((no_git OR NOT commit) AND NOT "$ENV{SPHV_ARCHIVE_COMMIT}" STREQUAL "")
+  # An unpacked `git archive` of that commit, which the bundle's reproduce.sh checked (its SHA-256
+  # and the commit in the archive's header) just before it builds.
+  set(commit "$ENV{SPHV_ARCHIVE_COMMIT}")
+  set(dirty "false")
+  set(changes "")
+elseif(no_git OR NOT commit)
   set(commit "unknown")
   set(dirty "true")  # no git: nothing says the sources are a committed state
   set(changes "not a git checkout")

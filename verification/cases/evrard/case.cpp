@@ -200,7 +200,8 @@ std::vector<Check> gates(const Sweep& s) {
 
 const Registration reg{Case{
     .name = "evrard",
-    .summary = "Evrard collapse (3D, self-gravity by tree): energy conservation and energy curves against 1D Lagrangian",
+    .summary = "Evrard collapse (3D, self-gravity by tree): energy conservation; energy curves and end-time profiles "
+               "against a 1D spherical Lagrangian solver",
     .n_counts = "particles in the sphere (the lattice with the nearest count: 912, 2176, 4224 are exact)",
     .tags = {"gate", "extreme", "sweep"},
     .params = [] {

@@ -222,7 +222,7 @@ const Levels levels = {.quick = {32, 64}, .standard = {32, 64, 128}, .full = {32
 const Registration reg{Case{
     .name = "sound_wave",
     .summary = "linear acoustic wave (1D/2D/3D), periodic box: v_x after a period against the linear wave; second "
-               "order without viscosity, first-order damping with (against its continuum rate)",
+               "order without viscosity; with viscosity, its damping rate against the continuum rate at first order",
     .n_counts = "particles per wavelength (per side of the periodic unit box)",
     .tags = {"gate", "sweep"},
     .params = [] {
