@@ -240,7 +240,8 @@ def kernels(case, label, members, errors, stem):
 
 
 LEVEL_COLOURS = ("#e6a024", "#3a9e6e", "#1f4e9c")  # coarse to fine: orange, green, blue (told apart in grey too)
-OUTCOME_COLOURS = {"verified": "#1f4e9c", "known failure": "#80269a", "no order claimed": "#845b00", "fail": "#b00000"}
+OUTCOME_COLOURS = {"verified": "#1f4e9c", "known failure": "#80269a", "provisional": "#a05000", "no order claimed": "#845b00",
+                   "fail": "#b00000"}
 
 
 def profiles(panels, stem, height=1.85):

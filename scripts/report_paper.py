@@ -20,8 +20,10 @@ RADIAL = (("sedov", "profile_rho", "Sedov: density $\\rho$"), ("sedov", "profile
 # three levels or more, up to PANELS panels.
 CONVERGENCE = ("sod", "sedov", "noh", "sound_wave", "gresho", "kh", "evrard", "square")
 PANELS = 8
-SHORT = {"verified": "verified", "known failure": "known failure", "no order claimed": "no claim", "fail": "fail"}
+SHORT = {"verified": "verified", "known failure": "known failure", "provisional": "provisional",
+         "no order claimed": "no claim", "fail": "fail"}
 OUTCOME_TEX = {"verified": r"\textcolor[rgb]{0,0.4,0}{verified}", "known failure": r"\textcolor[rgb]{0.5,0.15,0.6}{known failure}",
+               "provisional": r"\textcolor[rgb]{0.63,0.31,0}{\emph{provisional}}",
                "no order claimed": r"\textcolor[rgb]{0.52,0.36,0}{no claim}", "fail": r"\textcolor[rgb]{0.7,0,0}{\textbf{fail}}"}
 
 
@@ -48,8 +50,8 @@ def headline(s):
     claimed = [r for r in s["rows"] if num(r.get("expected")) or r["outcome"] == "fail"]
     if not claimed:
         return None
-    rank = {"fail": 0, "verified": 1, "known failure": 2, "no order claimed": 3}
-    return min(claimed, key=lambda r: (rank.get(r["outcome"], 4), not r["error"].startswith("L1"), "rho" not in r["error"]))
+    rank = {"fail": 0, "verified": 1, "known failure": 2, "provisional": 3, "no order claimed": 4}
+    return min(claimed, key=lambda r: (rank.get(r["outcome"], 5), not r["error"].startswith("L1"), "rho" not in r["error"]))
 
 
 def experiment(ss, s, row):

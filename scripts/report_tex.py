@@ -55,6 +55,7 @@ def expected_tex(row):
 
 # Each outcome in its own colour, as in the HTML report (xcolor).
 OUTCOME_TEX = {"verified": r"\textcolor[rgb]{0,0.4,0}{verified}", "known failure": r"\textcolor[rgb]{0.5,0.15,0.6}{known failure}",
+               "provisional": r"\textcolor[rgb]{0.63,0.31,0}{\emph{provisional}}",
                "no order claimed": r"\textcolor[rgb]{0.52,0.36,0}{no claim}", "fail": r"\textcolor[rgb]{0.7,0,0}{\textbf{fail}}"}
 
 
