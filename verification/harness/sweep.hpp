@@ -104,6 +104,9 @@ std::vector<Sweep> run_sweeps(const Case& c, Tier t, const std::vector<long>& le
 Sweep summarise(const Case& c, const std::vector<std::string>& settings, const std::vector<long>& levels,
                 std::vector<Result> runs, const std::string& tier = "");
 
+// The outcome of every error the runs report (and every claimed one) from the sweep's claims and checks.
+std::vector<Row> rows_of(const Sweep& s);
+
 nlohmann::json to_json(const Sweep& s);
 
 }  // namespace sphv
