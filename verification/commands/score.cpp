@@ -415,7 +415,7 @@ int score_command(const ScoreOptions& o) {
   if (r.extra.contains("series_note")) std::printf("%s\n", r.extra["series_note"].get<std::string>().c_str());
   if (r.extra.contains("mismatch")) std::printf("mismatch: %s\n", r.extra["mismatch"].get<std::string>().c_str());
   if (r.extra.contains("problem_check_note"))  // the errors stand unchecked: said, not hidden
-    std::printf("problem check %s\n", r.extra["problem_check_note"].get<std::string>().c_str());
+    std::printf("problem check: %s\n", r.extra["problem_check_note"].get<std::string>().c_str());
   std::string line = c.name;
   for (const auto& [k, v] : r.errors) {
     char buf[96];
