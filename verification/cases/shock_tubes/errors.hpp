@@ -102,10 +102,11 @@ inline const std::map<std::string, std::string> tube_error_defs = {
     {"L1_p", "as L1_rho for the pressure p"},
     {"L1_u", "as L1_rho for the specific internal energy u"},
     {"mismatch", "sphv score's check that a snapshot holds the problem its settings describe (not an error): the "
-                 "particles farther than 8 local spacings (m/rho)^(1/D) from each wave head of the exact solution at t "
-                 "(and from closed ends) hold the problem's undisturbed left or right state: per part, the median rho "
-                 "and p within 5 % relative and the median v_x within 5 % of that state's sound speed, at most a tenth "
-                 "of its particles off by more (a rarefaction head's numerical spreading; SWIFT's Sod: none); otherwise "
-                 "the verdict is mismatch"}};
+                 "particles in the constant parts of the exact solution at t (the initial left and right states, the "
+                 "star states), farther than 8 local spacings (m/rho)^(1/D) from every wave (16 for a star state) and "
+                 "from closed ends, hold those states: per part of at least 10 particles, the median rho and p within "
+                 "5 % relative and the median v_x within 5 % of the state's sound speed, at most a tenth of its "
+                 "particles off by more (a rarefaction's edge spreads; SWIFT's Sod: none). A time at which the waves "
+                 "cover the whole domain fixes no state: a mismatch too"}};
 
 }  // namespace sphv
