@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdio>
 #include <map>
 
@@ -35,6 +36,54 @@ std::string ic_format(const std::filesystem::path& path, const std::string& aske
   return asked;
 }
 
+namespace {
+
+bool sets(const std::vector<std::string>& settings, const std::string& key) {
+  return std::any_of(settings.begin(), settings.end(), [&](const std::string& s) {
+    return s.rfind(key + "=", 0) == 0 && s != key + "=preset";
+  });
+}
+
+// The configure value of SWIFT's adiabatic index equal to gamma, or "".
+std::string swift_option(double gamma) {
+  const std::pair<double, const char*> options[] = {{5.0 / 3.0, "5/3"}, {7.0 / 5.0, "7/5"}, {4.0 / 3.0, "4/3"}, {2.0, "2"}};
+  for (const auto& [g, text] : options)
+    if (std::abs(gamma - g) <= 1e-12 * g) return text;
+  return "";
+}
+
+}  // namespace
+
+SwiftGamma swift_gamma(const Case& c, std::vector<std::string> settings) {
+  const Scorer& sc = c.scorer;
+  if (!sc.gamma || std::none_of(c.params.begin(), c.params.end(), [](const ParamSpec& p) { return p.name == "gamma"; }))
+    return {std::move(settings), ""};
+  const bool given = sets(settings, "gamma");
+  if (!given) {
+    auto at_five_thirds = settings;
+    at_five_thirds.push_back("gamma=" + shortest(5.0 / 3.0));
+    try {
+      c.parse(at_five_thirds);
+      settings = std::move(at_five_thirds);
+    } catch (const InputError&) {  // the case allows no other gamma than its own (the n = 1 polytrope's 2)
+    }
+  }
+  const double gamma = sc.gamma(c.parse(settings));
+  const std::string option = swift_option(gamma), g = shortest(gamma);
+  std::string note;
+  if (option == "5/3")
+    note = "gamma 5/3" + std::string(given ? "" : " (SWIFT's default)") + ": the state SWIFT runs as built by default "
+           "(its gamma is fixed when it is built: ./configure --with-adiabatic-index=5/3, 7/5, 4/3 or 2; --set gamma=G "
+           "for another)";
+  else if (!option.empty())
+    note = "gamma " + g + (given ? "" : " (the case's only gamma)") + ": SWIFT runs this state only when built with "
+           "./configure --with-adiabatic-index=" + option + " (its default is 5/3; the file's gamma does not change it)";
+  else
+    note = "gamma " + g + ": no SWIFT build runs it (./configure --with-adiabatic-index offers 5/3, 7/5, 4/3 or 2 "
+           "only; SWIFT would run this state at its own gamma)";
+  return {std::move(settings), note};
+}
+
 void write_ic(const Case& c, const Params& p, const std::filesystem::path& path, const std::string& format) {
   InitialState st = find_ic(c.name)(p, format == "swift" ? IcLayout::swift : IcLayout::sphv);
   for (const auto& [k, v] : st.s.columns) st.s.taken_from[k] = k;
@@ -46,10 +95,12 @@ void ic_command(const IcOptions& o) {
   const Case& c = find_case(o.case_name);
   find_ic(c.name);
   const std::string format = ic_format(o.out, o.format);
-  const Params p = c.parse(o.settings);
+  const SwiftGamma g = format == "swift" ? swift_gamma(c, o.settings) : SwiftGamma{o.settings, ""};
+  const Params p = c.parse(g.settings);
   write_ic(c, p, o.out, format);
   std::printf("%s n=%ld: initial conditions written to %s (%s)\n", c.name.c_str(), p.integer("n"), o.out.c_str(),
               format.c_str());
+  if (!g.note.empty()) std::printf("%s\n", g.note.c_str());
 }
 
 }  // namespace sphv

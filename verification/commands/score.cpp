@@ -319,6 +319,7 @@ void finish(Result& r, const Case& c, const Params& p, std::size_t particles) {
   nlohmann::json defs = nlohmann::json::object();  // the case's definitions (sphv info CASE)
   for (const auto& [key, v] : r.errors)
     if (c.error_defs.count(key)) defs[key] = c.error_defs.at(key);
+  if (r.extra.contains("problem_check") && c.error_defs.count("mismatch")) defs["mismatch"] = c.error_defs.at("mismatch");
   r.extra["error_defs"] = defs;
   name_non_finite(r);  // a snapshot's extreme values (u = 1e300) can overflow an error: a verdict, not a NaN
 }
@@ -412,6 +413,9 @@ int score_command(const ScoreOptions& o) {
     std::printf("scored %zu of %zu particles (%s)\n", r.extra["particles_scored"].get<std::size_t>(), snaps.front().size(),
                 r.extra["window"].get<std::string>().c_str());
   if (r.extra.contains("series_note")) std::printf("%s\n", r.extra["series_note"].get<std::string>().c_str());
+  if (r.extra.contains("mismatch")) std::printf("mismatch: %s\n", r.extra["mismatch"].get<std::string>().c_str());
+  if (r.extra.contains("problem_check_note"))  // the errors stand unchecked: said, not hidden
+    std::printf("problem check: %s\n", r.extra["problem_check_note"].get<std::string>().c_str());
   std::string line = c.name;
   for (const auto& [k, v] : r.errors) {
     char buf[96];

@@ -60,6 +60,18 @@ bool Case::has_tag(const std::string& t) const {
   return std::find(tags.begin(), tags.end(), t) != tags.end();
 }
 
+bool Case::method_in_catalogue(const Params& p) const {
+  auto method = [&](const Params& q) {
+    std::vector<std::string> m;
+    for (const auto& kv : q.non_defaults())
+      if (std::find(claim_domain.begin(), claim_domain.end(), kv.substr(0, kv.find('='))) == claim_domain.end())
+        m.push_back(kv);
+    return m;
+  };
+  const auto mine = method(p);
+  return std::any_of(variants.begin(), variants.end(), [&](const auto& v) { return method(parse(v)) == mine; });
+}
+
 bool Case::verdict_expected(const Params& p, const std::string& verdict) const {
   if (verdict == "ok" || starts_with(verdict, "ok:") || starts_with(verdict, "stable")) return true;
   return starts_with(verdict, "unstable") && expects_unstable && expects_unstable(p);

@@ -76,6 +76,10 @@ struct OrderClaim {
   std::string experiment;
   bool at_least = false;
   std::string band_theory;  // the derivation of a band wider than max_band
+  // A claim of the physics at settings no catalogue variant measured (another gamma or state, an
+  // external code's run): no measured bound backs it here, the order alone verifies it
+  // (Case::claim_domain).
+  bool unbounded = false;
   bool claimed() const { return std::isfinite(expected); }
   bool known_failure() const { return !experiment.empty(); }
   double lo() const { return at_least ? expected : expected - band; }
@@ -114,6 +118,12 @@ struct Case {
   std::map<std::string, std::string> error_defs;
   // Method variants the catalogue sweeps, as settings (the first is the default).
   std::vector<std::vector<std::string>> variants = {{}};
+  // The domain in which the order claims hold: the parameters of the problem (not of the method)
+  // for every value of which they hold, e.g. the tubes' gamma, states and presets. Settings that
+  // differ from a catalogue variant only in these keep that variant's claims (unbounded: its
+  // measured bounds stay with it), and so does an external code's sweep (sweep --runner). Empty:
+  // the case declares no such domain.
+  std::vector<std::string> claim_domain;
   // A variant's levels when they differ from `levels` (e.g. fewer in 3D); may be empty.
   std::function<Levels(const Params&)> levels_for;
   std::function<void(const Params&)> validate;   // cross-parameter checks; may be empty
@@ -129,6 +139,9 @@ struct Case {
   Params parse(const std::vector<std::string>& settings) const;
   std::vector<long> tier_levels(const std::vector<std::string>& settings, Tier t) const;
   bool has_tag(const std::string& t) const;
+  // Whether p's method is a catalogue variant's: p's settings other than n and the claim
+  // domain's are those of one of `variants` (so the variant's claims hold at p).
+  bool method_in_catalogue(const Params& p) const;
   // Whether a run's verdict is what this case expects for these parameters.
   bool verdict_expected(const Params& p, const std::string& verdict) const;
 };

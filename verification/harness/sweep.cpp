@@ -123,7 +123,8 @@ std::string failed_names(const std::vector<const Check*>& checks) {
   return s;
 }
 
-// The outcome of every error the runs report (and every claimed one).
+}  // namespace
+
 std::vector<Row> rows_of(const Sweep& s) {
   std::set<std::string> names;
   for (const auto& r : s.runs)
@@ -163,20 +164,22 @@ std::vector<Row> rows_of(const Sweep& s) {
     } else if (!claim->second.claimed()) {
       row.outcome = "no order claimed";
       row.why = fill_reason(claim->second.why, s);
-    } else if (ordered && bounded && s.provisional.count(e)) {
+    } else if (ordered && (bounded || claim->second.unbounded) && s.provisional.count(e)) {
       const bool known = (*order_check)->kind == Check::Kind::known_failure;
       row.outcome = "provisional";
       row.why = std::string(known ? "known failure whose claim fails the acceptance rule (" : "inside the former window only; the acceptance rule fails (") +
                 s.provisional.at(e) + ")" + (known ? ": " + fill_reason(claim->second.why, s) : "");
-    } else if (ordered && bounded) {
+    } else if (ordered && (bounded || claim->second.unbounded)) {
       const bool known = (*order_check)->kind == Check::Kind::known_failure;
       row.outcome = known ? "known failure" : "verified";
       row.why = known ? fill_reason(claim->second.why, s) + "; the variant [" + claim->second.experiment + "] verifies it"
                       : claim->second.why;
-    } else if (!ordered && reporting < 2 && bounded) {
+      if (!bounded) row.why += "; a claim of the physics where no measured bound applies: the order alone is gated";
+    } else if (!ordered && reporting < 2 && (bounded || claim->second.unbounded)) {
       row.outcome = "no order claimed";
-      row.why = s.levels.size() < 2 ? "one level in this sweep: the order is not observable; its bound held"
-                                    : "reported at one level of this sweep only: the order is not observable; its bound held";
+      row.why = std::string(s.levels.size() < 2 ? "one level in this sweep: the order is not observable"
+                                                : "reported at one level of this sweep only: the order is not observable") +
+                (bounded ? "; its bound held" : "; only the verdict is gated");
     } else {
       row.why = !ordered ? "order claimed but not observed at every level" : "order claimed but the error has no bound";
     }
@@ -184,7 +187,6 @@ std::vector<Row> rows_of(const Sweep& s) {
   }
   return rows;
 }
-}  // namespace
 
 bool Sweep::passed() const {
   for (const auto& c : checks)

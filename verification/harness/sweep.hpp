@@ -115,6 +115,9 @@ Sweep summarise(const Case& c, const std::vector<std::string>& settings, const s
 // verifies the same error; the row fails where it does not.
 void check_experiments(std::vector<Sweep>& sweeps);
 
+// The outcome of every error the runs report (and every claimed one) from the sweep's claims and checks.
+std::vector<Row> rows_of(const Sweep& s);
+
 nlohmann::json to_json(const Sweep& s);
 
 }  // namespace sphv

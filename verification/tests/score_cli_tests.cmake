@@ -196,9 +196,9 @@ set_tests_properties(runner_ic_placeholder PROPERTIES PASS_REGULAR_EXPRESSION "P
 # {ic} in SWIFT's format driving a SWIFT-like command end to end: the stand-in reads the initial
 # conditions it is handed before it runs, and the sweep scores what it writes.
 add_test(NAME runner_swift_ic COMMAND bash -c
-  "rm -rf runner_swift_ic && $<TARGET_FILE:sphv> sweep sod --levels 100 --ic-format swift --runner 'bash ${CMAKE_SOURCE_DIR}/verification/tests/external_code.sh $<TARGET_FILE:sphv> sod {n} {out} swift --ic {ic}' --out runner_swift_ic; test -s runner_swift_ic/n100/ic.hdf5 && grep -h 'external code: read' runner_swift_ic/n100/log.txt && grep -q '\"verdict\": \"ok\"' runner_swift_ic/n100/result.json && echo PASS"
+  "rm -rf runner_swift_ic && $<TARGET_FILE:sphv> sweep sod --levels 100 --ic-format swift --runner 'bash ${CMAKE_SOURCE_DIR}/verification/tests/external_code.sh $<TARGET_FILE:sphv> sod {n} {out} swift --ic {ic} gamma=5/3' --out runner_swift_ic; test -s runner_swift_ic/n100/ic.hdf5 && grep -h 'external code: read' runner_swift_ic/n100/log.txt && grep -q '\"verdict\": \"ok\"' runner_swift_ic/n100/result.json && echo PASS"
   WORKING_DIRECTORY ${CMAKE_BINARY_DIR})
-set_tests_properties(runner_swift_ic PROPERTIES PASS_REGULAR_EXPRESSION "external code: read 11[0-9] particles at t = 0 \\(x, vx, m, rho, u, h\\).*PASS")
+set_tests_properties(runner_swift_ic PROPERTIES PASS_REGULAR_EXPRESSION "gamma 5/3 \\(SWIFT's default\\).*external code: read 11[0-9] particles at t = 0 \\(x, vx, m, rho, u, h\\).*PASS")
 # The stand-in refuses initial conditions without the gas state (here: no u).
 add_test(NAME runner_ic_without_state COMMAND bash -c
   "printf '# time = 0\\nx,vx,m,rho,h\\n0.1,0,1,1,0.1\\n' > bad_ic.csv && bash ${CMAKE_SOURCE_DIR}/verification/tests/external_code.sh $<TARGET_FILE:sphv> sod 50 bad_out.csv csv --ic bad_ic.csv; test $? -ne 0 && echo PASS"
@@ -206,9 +206,10 @@ add_test(NAME runner_ic_without_state COMMAND bash -c
 set_tests_properties(runner_ic_without_state PROPERTIES PASS_REGULAR_EXPRESSION "lack u.*PASS")
 
 # evrard from the command line: sphv run's particles as a SWIFT snapshot score to the run's
-# profile errors exactly (136 particles to t = 1.5, through the bounce: ~1 s).
+# profile errors exactly (136 particles to t = 1.5, through the bounce: ~1 s). So few particles
+# lose 62 % of the energy by then: the score's verdict is "mismatch" (exit 1), its errors the run's.
 add_test(NAME score_evrard_round_trip COMMAND bash -c
-  "rm -rf ev_run ev_score && $<TARGET_FILE:sphv> --threads 1 run evrard --set n=100 t_end=1.5 zones=100 --out ev_run && $<TARGET_FILE:sphv> convert --input ev_run/particles.csv --out ev.hdf5 --format swift --time 1.5 && $<TARGET_FILE:sphv> score evrard --snapshot ev.hdf5 --set zones=100 --out ev_score && python3 ${CMAKE_SOURCE_DIR}/verification/tests/compare_score_run.py ev_score/result.json ev_run/result.json rho_profile_L1 vr_profile_L1 u_profile_L1"
+  "rm -rf ev_run ev_score && $<TARGET_FILE:sphv> --threads 1 run evrard --set n=100 t_end=1.5 zones=100 --out ev_run && $<TARGET_FILE:sphv> convert --input ev_run/particles.csv --out ev.hdf5 --format swift --time 1.5 && $<TARGET_FILE:sphv> score evrard --snapshot ev.hdf5 --set zones=100 --out ev_score; python3 ${CMAKE_SOURCE_DIR}/verification/tests/compare_score_run.py ev_score/result.json ev_run/result.json rho_profile_L1 vr_profile_L1 u_profile_L1"
   WORKING_DIRECTORY ${_sdir})
 set_tests_properties(score_evrard_round_trip PROPERTIES PASS_REGULAR_EXPRESSION "PASS: 3 errors equal")
 file(WRITE ${_sdir}/evrard_1d.csv "# time = 1\nx,vx,m,rho,u\n0.1,0,1,1,1\n")
@@ -321,3 +322,36 @@ add_test(NAME square_bad_input_exit_2 COMMAND bash -c
   "$<TARGET_FILE:sphv> run square --set t_end=-1 --out sq_refused; a=$?; $<TARGET_FILE:sphv> ic square --set n=10 --out sq.csv; b=$?; test $a -eq 2 && test $b -eq 2 && test ! -e sq.csv && echo PASS"
   WORKING_DIRECTORY ${_sdir})
 set_tests_properties(square_bad_input_exit_2 PROPERTIES PASS_REGULAR_EXPRESSION "PASS")
+
+# Issue 55: `sphv ic --format swift` writes the state for SWIFT's default gamma 5/3 unless gamma is
+# set (u = 1.5 on the left), and names the configure option another gamma needs.
+add_test(NAME ic_swift_gamma_five_thirds COMMAND bash -c
+  "rm -f g53.hdf5 g53.csv && $<TARGET_FILE:sphv> ic sod --set n=40 --out g53.hdf5 && $<TARGET_FILE:sphv> convert --input g53.hdf5 --out g53.csv --format csv > /dev/null && grep -q '^# gamma = 1.6666666666666667' g53.csv && python3 -c 'import sys; rows = [l for l in open(sys.argv[1]) if not l.startswith(\"#\")]; u = rows[0].split(\",\").index(\"u\"); sys.exit(0 if abs(float(rows[1].split(\",\")[u]) - 1.5) < 1e-12 else 1)' g53.csv && echo PASS"
+  WORKING_DIRECTORY ${_sdir})
+set_tests_properties(ic_swift_gamma_five_thirds PROPERTIES PASS_REGULAR_EXPRESSION "gamma 5/3 \\(SWIFT's default\\).*PASS")
+add_test(NAME ic_swift_gamma_other COMMAND sphv ic sod --set n=40 gamma=1.4 --out ${_sdir}/g14.hdf5)
+set_tests_properties(ic_swift_gamma_other PROPERTIES PASS_REGULAR_EXPRESSION "gamma 1.4: SWIFT runs this state only when built with ./configure --with-adiabatic-index=7/5")
+add_test(NAME ic_csv_keeps_case_gamma COMMAND bash -c
+  "$<TARGET_FILE:sphv> ic sod --set n=40 --out g_csv.csv && python3 -c 'import sys; rows = [l for l in open(sys.argv[1]) if not l.startswith(\"#\")]; u = rows[0].split(\",\").index(\"u\"); sys.exit(0 if abs(float(rows[1].split(\",\")[u]) - 2.5) < 1e-12 else 1)' g_csv.csv && echo PASS"
+  WORKING_DIRECTORY ${_sdir})
+set_tests_properties(ic_csv_keeps_case_gamma PROPERTIES PASS_REGULAR_EXPRESSION "PASS" FAIL_REGULAR_EXPRESSION "SWIFT")
+# The wrong problem is never "ok": gamma 1.4's state run at 5/3 (what SWIFT makes of it), scored
+# at 5/3 (the gamma SWIFT's file states), is a mismatch naming gamma (exit 1, the result written).
+add_test(NAME score_mismatch_gamma COMMAND bash -c
+  "rm -rf gm_run gm_score; $<TARGET_FILE:sphv> --threads 1 run sod --set n=200 gamma=5/3 p_l=5/3 p_r=1/6 --out gm_run > /dev/null && $<TARGET_FILE:sphv> convert --input gm_run/particles.csv --out gm.hdf5 --format swift --time 0.25 > /dev/null && $<TARGET_FILE:sphv> score sod --snapshot gm.hdf5 --set gamma=5/3 --out gm_score; s=$?; test $s -eq 1 && test -s gm_score/result.json && echo PASS"
+  WORKING_DIRECTORY ${_sdir})
+set_tests_properties(score_mismatch_gamma PROPERTIES PASS_REGULAR_EXPRESSION "mismatch: [^\n]*p median 1\\.6[^\n]*Likely cause: gamma: [^\n]*at gamma 1\\.4[^\n]*\nsod, [^\n]*verdict: mismatch.*PASS")
+
+# Claims of the physics applied to an external sweep (issue 55): the stand-in code at gamma 5/3
+# (settings no catalogue variant measured) is gated by the tube's first-order claim and reads
+# verified; given a fault that halves its order, the sweep fails and exits 1.
+add_test(NAME runner_physics_claim COMMAND bash -c
+  "rm -rf runner_claim && $<TARGET_FILE:sphv> --threads 1 sweep sod --levels 400,800,1600 --set gamma=5/3 --runner 'bash ${CMAKE_SOURCE_DIR}/verification/tests/external_code.sh $<TARGET_FILE:sphv> sod {n} {out} csv gamma=5/3' --out runner_claim; s=$?; test $s -eq 0 && echo PASS"
+  WORKING_DIRECTORY ${_sdir})
+set_tests_properties(runner_physics_claim PROPERTIES PASS_REGULAR_EXPRESSION "L1_p [^\n]* verified[^\n]*\n[^\n]*L1_rho [^\n]* verified[^\n]*\n[^\n]*L1_u [^\n]* verified[^\n]*\n[^\n]*L1_v [^\n]* verified.*PASS"
+  FAIL_REGULAR_EXPRESSION "no order claimed")
+add_test(NAME runner_claim_fails_exit_1 COMMAND bash -c
+  "rm -rf runner_half && EXTERNAL_CODE_FAULT=half_order $<TARGET_FILE:sphv> --threads 1 sweep sod --levels 400,800,1600 --set gamma=5/3 --runner 'bash ${CMAKE_SOURCE_DIR}/verification/tests/external_code.sh $<TARGET_FILE:sphv> sod {n} {out} csv gamma=5/3' --out runner_half; s=$?; test $s -eq 1 && echo PASS"
+  WORKING_DIRECTORY ${_sdir})
+set_tests_properties(runner_claim_fails_exit_1 PROPERTIES PASS_REGULAR_EXPRESSION "L1_rho [^\n]* fail: failed: order_L1_rho.*PASS"
+  FAIL_REGULAR_EXPRESSION "no order claimed")

@@ -23,7 +23,11 @@ inline const std::map<std::string, std::string> error_defs = {
     {"L1_v", "sum_i m_i |v_phi,i - v_phi(r_i)| / sum_i m_i over the particles with r_i < 0.5 (mass-weighted; "
              "per particle for equal masses), r_i the distance from the vortex's centre, v_phi,i = (x_i - c) x v_i "
              "/ r_i, v_phi the exact stationary profile (reference/gresho; peak 1 at r = 0.2). extra: L1_v_r the same "
-             "mean of |v_r,i| (exact 0), v_phi_peak the largest mean v_phi of 0.02-wide radial bins (exact 1)"}};
+             "mean of |v_r,i| (exact 0), v_phi_peak the largest mean v_phi of 0.02-wide radial bins (exact 1)"},
+    {"mismatch", "sphv score's check that a snapshot holds the problem its settings describe (not an error): every "
+                 "particles beyond r = 0.4 + 2 support radii (h, or 3 spacings (m/rho)^(1/2) without h) hold rho0 and "
+                 "the outer pressure p(0.4): medians within 5 % relative, at most a tenth of them off by more; "
+                 "otherwise the verdict is mismatch"}};
 
 // Fills r.errors (L1_v), extras and the profile figure from the particles at time t; x relative to
 // the vortex's centre.

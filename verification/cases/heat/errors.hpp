@@ -53,6 +53,9 @@ inline const std::map<std::string, std::string> error_defs = {
     {"spatial_sine", "as spatial_gauss for the sine mode T = T0 + A exp(-chi d (2 pi)^2 t) prod_a sin(2 pi x_a) "
                      "(sphv score: setup=sine)"},
     {"time_euler", "RMS (as spatial_gauss) of forward Euler at dt = C h^2 / chi against CVODE (sphv run only)"},
-    {"time_heun", "as time_euler for Heun (sphv run only)"}};
+    {"time_heun", "as time_euler for Heun (sphv run only)"},
+    {"mismatch", "sphv score's check that a snapshot holds the problem its settings describe (not an error): the "
+                 "particles' mean u is the exact field's mean at their positions within 5 % of c_v A (conduction "
+                 "keeps the total); otherwise the verdict is mismatch"}};
 
 }  // namespace sphv::heat

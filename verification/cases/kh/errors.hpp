@@ -24,7 +24,10 @@ inline const std::map<std::string, std::string> error_defs = {
                "for y < 1/2 and 3/4 above; sigma_ref the same fit at the same times to M of the linear evolution of "
                "the seed (reference/kh_linear: the linearised Euler equations of the mode exp(4 pi i x) on 512 points "
                "in y, RK4); extra growth_rate_eigen: the unstable eigenmode's rate (compressible Rayleigh equation, "
-               "shooting), which the seed's transients tilt away from in the window (extra transient_tilt)"}};
+               "shooting), which the seed's transients tilt away from in the window (extra transient_tilt)"},
+    {"mismatch", "sphv score's check that each snapshot holds the problem its settings describe (not an error): the "
+                 "particles' mass over the box's area is (rho1 + rho2) / 2 within 1e-3 and their median pressure p0 "
+                 "within 5 % (subsonic mixing changes neither); otherwise the verdict is mismatch"}};
 
 // M of one state, with positions relative to the box's lower corner and its side lengths (a
 // scored file's box), k = 4 pi on the unit box.

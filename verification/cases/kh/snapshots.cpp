@@ -2,9 +2,12 @@
 // initial conditions of `sphv ic`.
 #include "verification/cases/kh/snapshots.hpp"
 
+#include <algorithm>
+
 #include "verification/cases/kh/errors.hpp"
 #include "verification/cases/kh/setup.hpp"
 #include "verification/snapshot/ic_layout.hpp"
+#include "verification/snapshot/problem_check.hpp"
 #include "verification/snapshot/score_columns.hpp"
 
 namespace sphv::kh_snapshots_case {
@@ -12,9 +15,32 @@ namespace {
 
 using namespace snapshot_columns;
 
+// The layers the settings describe, which the instability mixes but does not change as a whole:
+// the particles' mass over the box's area is the layers' mean density (rho1 + rho2) / 2 within
+// 1e-3 (a code conserves mass) and their median pressure is p0 within 5 % (the flow is
+// subsonic: pressure varies by a few % of p0 at most). Another gamma (u written for it), p0 or
+// pair of densities is off by more.
+void check_layers(Result& r, const Params& p, const Snapshot& s, const sph::Vec<2>& len) {
+  const std::string who = "kh";
+  const double rho_mean = 0.5 * (p.real("rho1") + p.real("rho2")), p0 = p.real("p0"), gamma = p.real("gamma");
+  double mass = 0.0;
+  for (double m : s.at("m", who)) mass += m;
+  std::vector<double> pr = pressure(s, gamma, who);
+  std::nth_element(pr.begin(), pr.begin() + pr.size() / 2, pr.end());
+  const std::string where = "the layers (" + std::to_string(s.size()) + " particles)";
+  const std::vector<StateCheck> checks = {{where, "mean rho", mass / (len[0] * len[1]), rho_mean, rho_mean, 1e-3},
+                                          {where, "median p", pr[pr.size() / 2], p0, p0, 0.05}};
+  apply_problem_check(r, checks,
+                      !checks[0].pass() ? "rho1, rho2 or the box: the particles' mass over the box's area is " +
+                                              problem_check::number(mass / (len[0] * len[1])) + " (--set rho1=R1 rho2=R2)"
+                                        : "gamma or p0: the median pressure is " + problem_check::number(pr[pr.size() / 2]) +
+                                              " (--set p0=P or gamma=G; SWIFT's gamma is fixed when it is built: "
+                                              "--with-adiabatic-index)");
+}
+
 // One snapshot of the Kelvin-Helmholtz layer: its time (the file's; a series needs each one) and
 // McNally et al.'s mode amplitude M over the file's box (the unit box where it states none).
-Result score_kh(const Params&, const Snapshot& s) {
+Result score_kh(const Params& p, const Snapshot& s) {
   const std::string who = "kh";
   require_dim(s, 2, who);
   if (!s.time) throw InputError(s.path.string() + ": no time in the snapshot (kh fits a growth rate to the files' times)");
@@ -29,6 +55,7 @@ Result score_kh(const Params&, const Snapshot& s) {
   }
   if (!(len[0] > 0.0 && len[1] > 0.0)) throw InputError(s.path.string() + ": kh needs a box of positive size");
   Result r;
+  check_layers(r, p, s, len);
   r.extra["t"] = *s.time;
   r.extra["M"] = kh::mode_amplitude(vectors<2>(s, "", who), vectors<2>(s, "v", who), s.at("m", who), s.at("rho", who), lo, len);
   r.extra["box_from"] = from;
@@ -46,6 +73,14 @@ Result score_kh_series(const Params& p, const std::vector<Result>& each) {
                      "]: give at least 3 (or --set the window)");
   Result r;
   kh::growth_result(r, p, f, t, M);
+  r.extra["problem_check"] = each.front().extra["problem_check"];
+  for (std::size_t k = 0; k < each.size(); ++k)  // a snapshot of another problem makes the series one
+    if (each[k].verdict == "mismatch") {
+      r.verdict = "mismatch";
+      r.extra["mismatch"] = "snapshot " + std::to_string(k + 1) + " of " + std::to_string(each.size()) + ": " +
+                            each[k].extra["mismatch"].get<std::string>();
+      break;
+    }
   r.extra["series_t"] = t;
   r.extra["series_M"] = M;
   r.extra["series_note"] = "growth rate " + shortest(f.rate) + " +- " + shortest(f.stderr_rate) + " from " +

@@ -23,7 +23,12 @@ inline const std::map<std::string, std::string> error_defs = {
                     "going outwards from R_s/4, through (rho_post + rho_pre(R_s)) / 2"},
     {"swept_mass", "|M_swept - rho0 vol_d(R_s + t)| / (rho0 vol_d(R_s + t)), M_swept = sum_i m_i min(1, max(0, 1 + "
                    "v_i . r_i / |r_i|)): the mass brought to rest, each particle weighted by the share of its unit "
-                   "inflow speed it has lost"}};
+                   "inflow speed it has lost"},
+    {"mismatch", "sphv score's check that a snapshot holds the problem its settings describe (not an error): every "
+                 "particles farther than R_s + 2 support radii from the centre and 2 supports inside the outermost "
+                 "particle (h, or 3 spacings (m/rho)^(1/d) without h) flow in at v_r = -1 with rho = rho0 (1 + "
+                 "t/r)^(d-1): medians within 5 % (v_r in units of the inflow speed), at most a tenth of them off by "
+                 "more; otherwise the verdict is mismatch"}};
 
 // Fills r.errors, r.functionals, figures and extras from the particles at time t (positions
 // relative to the centre); n: particles per unit length (figure titles only).

@@ -25,7 +25,10 @@ inline const std::map<std::string, std::string> error_defs = {
      "sin(pi r / R) / (pi r / R) inside R and 0 beyond (the n = 1 Lane-Emden profile, M = sum_i m_i)"},
     {"central_density_drift",
      "max over the steps t of the free evolution of |rho_in(t) / rho_in(0) - 1|, rho_in = sum m_i rho_i / sum m_i "
-     "over the innermost particles (by r_i) holding a tenth of the mass"}};
+     "over the innermost particles (by r_i) holding a tenth of the mass"},
+    {"mismatch", "sphv score's check that a snapshot holds the problem its settings describe (not an error): the "
+                 "particles' total mass is the star's M = 1 within 1e-4 and their median p / rho^gamma is K within 5 % "
+                 "(an adiabatic star keeps its entropy); otherwise the verdict is mismatch"}};
 
 // rho_in: the mass-weighted mean of rho over the innermost particles (radii rad) holding the
 // mass fraction q (the particle that crosses q counted with its share).

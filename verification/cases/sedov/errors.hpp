@@ -23,7 +23,11 @@ inline const std::map<std::string, std::string> error_defs = {
      "exact density convolved with the cubic spline at each particle's support h_i (the SPH estimate of the exact "
      "field). Not reported for a snapshot without h (extra shock_radius_halfrise: |R_front - R| / R)"},
     {"L1_rho", "sum over particles with r < 1.2 R of (m_i/rho_i) |rho_i - rho_exact(r_i, t)|, divided by the ball's "
-               "volume vol_d(1.2 R) and by rho0 (r from the blast centre; exact: the Sedov-Taylor similarity solution)"}};
+               "volume vol_d(1.2 R) and by rho0 (r from the blast centre; exact: the Sedov-Taylor similarity solution)"},
+    {"mismatch", "sphv score's check that a snapshot holds the problem its settings describe (not an error): every "
+                 "particles farther than R + 2 support radii from the centre (h, or 3 spacings (m/rho)^(1/d) without "
+                 "h) are ambient gas at rest: median rho within 5 % of rho0 and median |v| within 5 % of the shock "
+                 "speed U, at most a tenth of them off by more; otherwise the verdict is mismatch"}};
 
 // The shock radius sphv's runs end at (box half-width 0.5).
 constexpr double R_target = 0.3;

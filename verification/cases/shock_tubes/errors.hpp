@@ -6,6 +6,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "reference/riemann.hpp"
@@ -16,6 +17,8 @@ namespace sphv {
 
 // The Riemann problem of a sod/sod2d/sod3d parameter set (preset and overrides), validated.
 TubeProblem tube_problem(const Params& p);
+// The presets' left and right states (Toro's table 4.1), by name.
+std::map<std::string, std::pair<reference::GasState, reference::GasState>> tube_presets();
 
 // The exact solution on a tube's domain: the Riemann problem at x0 and, in a periodic box, the
 // one at the wrap (right state on its left, left state on its right). Each holds outside the
@@ -97,6 +100,13 @@ inline const std::map<std::string, std::string> tube_error_defs = {
                "solver at x0 (and, periodic, at the wrap with the states the other way round)"},
     {"L1_v", "as L1_rho for the x-velocity v_x"},
     {"L1_p", "as L1_rho for the pressure p"},
-    {"L1_u", "as L1_rho for the specific internal energy u"}};
+    {"L1_u", "as L1_rho for the specific internal energy u"},
+    {"mismatch", "sphv score's check that a snapshot holds the problem its settings describe (not an error): the "
+                 "particles in the constant parts of the exact solution at t (the initial left and right states, the "
+                 "star states), farther than 8 local spacings (m/rho)^(1/D) from every wave (16 for a star state) and "
+                 "from closed ends, hold those states: per part of at least 10 particles, the median rho and p within "
+                 "5 % relative and the median v_x within 5 % of the state's sound speed, at most a tenth of its "
+                 "particles off by more (a rarefaction's edge spreads; SWIFT's Sod: none). A time at which the waves "
+                 "cover the whole domain fixes no state: a mismatch too"}};
 
 }  // namespace sphv

@@ -26,7 +26,11 @@ inline const std::map<std::string, std::string> error_defs = {
     {"damping", "|Gamma / Gamma_visc - 1|, Gamma = -ln(amplitude_ratio) / t the measured decay rate of v_x's fundamental, Gamma_visc = "
                 "nu k^2 / 4 the artificial viscosity's (45) rate in the continuum limit on the run's lattice "
                 "(sound_wave/errors.hpp: nu = -(alpha c_s h_mu / 2) sum_j dx^d s_x^4 W'(r_j) / (r_j (r_j^2 + eps "
-                "h_mu^2)), acting only in the compression half of the wave); only with alpha > 0"}};
+                "h_mu^2)), acting only in the compression half of the wave); only with alpha > 0"},
+    {"mismatch", "sphv score's check that a snapshot holds the problem its settings describe (not an error): the "
+                 "particles' mass over the box's volume is rho0 within 1e-3, their mass-weighted mean pressure rho0 "
+                 "c_s^2 / gamma within 5 % and their mean v_x 0 within 5 % of c_s (a linear wave leaves the mean state "
+                 "as it is); otherwise the verdict is mismatch"}};
 
 // The amplitude decay rate of the wave's fundamental that the viscosity (44)-(46) gives in the
 // continuum limit (k h -> 0, small A). Expanding v_j about x_i, the pair terms' v'' part sums to

@@ -28,7 +28,10 @@ inline const std::map<std::string, std::string> error_defs = {
                "square's edge, relative to the square's; c_i = (m_i / rho_phase)^(1/d) the side of particle i's cell at "
                "its phase's exact density (dense: u_i below sqrt(u_in u_out)), w_i the fraction of that cell outside the "
                "square for a dense particle, inside it for a light one: 0 at t = 0, where the cells tile each phase "
-               "exactly; only for the sharp step (width = 0)"}};
+               "exactly; only for the sharp step (width = 0)"},
+    {"mismatch", "sphv score's check that a snapshot holds the problem its settings describe (not an error): the "
+                 "particles' median pressure is p0 within 5 % (the square is isobaric at every time); otherwise the "
+                 "verdict is mismatch"}};
 
 // Fills r.errors, extras and figures from the particles at time t.
 template <int D>
