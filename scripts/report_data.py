@@ -81,7 +81,8 @@ def expected_text(row):
     """The claim and its window: "1 ± 0.25 [0.75, 1.25]", or "at least 0.74"."""
     if not num(row.get("expected")):
         return "none"
-    lo, hi = (row.get("window") or [None, None]) + [None, None][len(row.get("window") or []):]
+    window = list(row.get("window") or []) + [None, None]
+    lo, hi = window[0], window[1]
     if num(lo) and not num(hi):
         return f"at least {lo:.3g}"
     text = f"{row['expected']:.3g} ± {row.get('band', 0):.3g}"
