@@ -141,23 +141,81 @@ Series sum_against_ratio() {
   return s;
 }
 
-// The lattice-sum error oscillates with how the knots fall between lattice points (period 2 dx
-// in h for the cubic's h/2). Its envelope, the worst error over [h, h + 2 dx), is what converges
-// cleanly; a single h would give a fit that depends on luck.
+// The order of the lattice-sum error (20) in n at fixed h, per kernel and dimension d. The sum is
+// the trapezoidal rule of W on the lattice; its error is W's Fourier transform at the reciprocal
+// lattice vectors ~ 2 pi n, which decays as fast as W's least smooth place allows: a sphere
+// r = q_k h where the m-th derivative jumps gives |k|^-(m + 1 + (d-1)/2), a factor (1-q)^e at the
+// edge the same with m = e, and a lowest odd power q^p of the innermost piece (W is then not
+// smooth at r = 0) gives |k|^-(d + p). In 1D, 2D, 3D:
+//   cubic (m = 3 at q = 1/2, 1; p = 3):                 4, 4.5, 5
+//   quartic (m = 4 at 1/5, 3/5, 1; even at 0):          5, 5.5, 6
+//   quintic (m = 5 at 1/3, 2/3, 1; p = 5):              6, 6.5, 7
+//   Wendland C2 (1D: e = 3, p = 3; 2D, 3D: e = 4, p = 3): 4, 5 (the origin), 6
+//   Wendland C4 (1D: e = 5, p = 5; 2D, 3D: e = 6, p = 5): 6, 7 (the origin), 8
+//   Wendland C6 (1D: e = 7, p = 7; 2D, 3D: e = 8, p = 7): 8, 9 (the origin), 10
+// An independent evaluation of the same error definition (reference/independent/
+// kernel_lattice_sums.py: numpy, the kernels' published shapes, its own normalisation) agrees
+// with this case to 4 digits and gives the bounds below.
+struct Theory {
+  double order[3];
+  const char* why;
+  // The bound err n^p <= C at a sweep's finest level (every tier's), p below the order: C is 1.5
+  // times the largest err n^p the independent evaluation gives on n = 64..512 (64..256 for C6,
+  // which reaches round-off at 512).
+  double p[3], C[3];
+};
+const char* const why_pieces = "trapezoidal lattice sum of a piecewise polynomial: the jump of its m-th derivative "
+                               "on the spheres r = q_k h decays as |k|^-(m + 1 + (d-1)/2) in Fourier space";
+const char* const why_wendland = "trapezoidal lattice sum of a one-piece Wendland function: its Fourier transform "
+                                 "decays as |k|^-(e + 1 + (d-1)/2) from (1-q)^e at the edge and as |k|^-(d + p) from "
+                                 "the odd power q^p at the origin, the slower of the two";
+// Band 0.3 (the acceptance rule's largest) for every kernel: the envelope's fits on the standard
+// levels lie within 0.18 of the orders (cubic 3D 5.17), their finest pairs within 0.32.
+constexpr double band = 0.3;
+const std::map<std::string, Theory> theory = {
+    {"cubic_spline", {{4.0, 4.5, 5.0}, why_pieces, {3.5, 4.0, 4.5}, {177.0, 820.0, 3340.0}}},
+    {"quartic_spline", {{5.0, 5.5, 6.0}, why_pieces, {4.2, 4.7, 5.2}, {708.0, 3660.0, 14600.0}}},
+    {"quintic_spline", {{6.0, 6.5, 7.0}, why_pieces, {5.2, 5.7, 6.2}, {12400.0, 59200.0, 2.37e5}}},
+    {"wendland_c2", {{4.0, 5.0, 6.0}, why_wendland, {3.5, 4.5, 5.5}, {132.0, 5380.0, 95800.0}}},
+    {"wendland_c4", {{6.0, 7.0, 8.0}, why_wendland, {5.5, 6.5, 7.5}, {23400.0, 1.48e6, 3.2e7}}},
+    {"wendland_c6", {{8.0, 9.0, 10.0}, why_wendland, {7.5, 8.5, 9.5}, {9.31e6, 7.93e8, 2.05e10}}},
+};
+
+// The lattice-sum error oscillates with where the knots fall between lattice points: a knot at
+// q h returns to the same place after h grows by dx / q, all of them together after the knots'
+// period P dx, P the least integer with every P q whole (cubic 2, quartic 5, quintic 3, a one-piece
+// Wendland 1). What converges cleanly is its envelope, which falls as h^-p at fixed n: the worst
+// error over [h, h + P dx) (at least 2 dx), each shift h' referred back to h by (h'/h)^p. Without
+// that factor the window's own width (P dx, 17 % of h at n = 128) adds a scatter of +-0.4 to the
+// local orders; with it, an error of another order than p still converges at its own order (the
+// factor tends to 1).
+template <template <int> class K>
+constexpr int knot_period() {
+  for (int P = 1; P <= 12; ++P) {
+    bool whole = true;
+    for (double q : K<1>::knots) whole = whole && std::abs(P * q - std::round(P * q)) < 1e-9;
+    if (whole) return std::max(P, 2);
+  }
+  return 12;
+}
 template <template <int> class K, int D>
-double worst_lattice_sum_error(double h, double dx) {
+double worst_lattice_sum_error(double h, double dx, double p) {
   double worst = 0.0;
-  for (int k = 0; k < 32; ++k) worst = std::max(worst, lattice_sum_error<K, D>(h + k * dx / 16.0, dx));
+  for (int k = 0; k < 16 * knot_period<K>(); ++k) {
+    const double hk = h + k * dx / 16.0;
+    worst = std::max(worst, lattice_sum_error<K, D>(hk, dx) * std::pow(hk / h, p));
+  }
   return worst;
 }
 
 template <template <int> class K>
 Result run_kernel(double h, double dx) {
+  const Theory& t = theory.at(K<1>::name);
   Result r;
   r.n_particles = 0;
-  r.errors = {{"sum_1d", worst_lattice_sum_error<K, 1>(h, dx)},
-              {"sum_2d", worst_lattice_sum_error<K, 2>(h, dx)},
-              {"sum_3d", worst_lattice_sum_error<K, 3>(h, dx)}};
+  r.errors = {{"sum_1d", worst_lattice_sum_error<K, 1>(h, dx, t.order[0])},
+              {"sum_2d", worst_lattice_sum_error<K, 2>(h, dx, t.order[1])},
+              {"sum_3d", worst_lattice_sum_error<K, 3>(h, dx, t.order[2])}};
   r.extra = {{"kernel", K<1>::name},
              {"ratio_h_dx", h / dx},
              {"quadrature_error", {quadrature_error<K, 1>(h), quadrature_error<K, 2>(h), quadrature_error<K, 3>(h)}},
@@ -182,57 +240,10 @@ Result run(const Params& p) {
   return r;
 }
 
-// The order of the lattice-sum error (20) in n at fixed h, per kernel and dimension d. The sum is
-// the trapezoidal rule of W on the lattice; its error is W's Fourier transform at the reciprocal
-// lattice vectors ~ 2 pi n, which decays as fast as W's least smooth place allows: a sphere
-// r = q_k h where the m-th derivative jumps gives |k|^-(m + 1 + (d-1)/2), a factor (1-q)^e at the
-// edge the same with m = e, and a lowest odd power q^p of the innermost piece (W is then not
-// smooth at r = 0) gives |k|^-(d + p). In 1D, 2D, 3D:
-//   cubic (m = 3 at q = 1/2, 1; p = 3):                 4, 4.5, 5
-//   quartic (m = 4 at 1/5, 3/5, 1; even at 0):          5, 5.5, 6
-//   quintic (m = 5 at 1/3, 2/3, 1; p = 5):              6, 6.5, 7
-//   Wendland C2 (1D: e = 3, p = 3; 2D, 3D: e = 4, p = 3): 4, 5 (the origin), 6
-//   Wendland C4 (1D: e = 5, p = 5; 2D, 3D: e = 6, p = 5): 6, 7 (the origin), 8
-//   Wendland C6 (1D: e = 7, p = 7; 2D, 3D: e = 8, p = 7): 8, 9 (the origin), 10
-// Fits of an independent evaluation (numpy, the same error definition) on the quick levels
-// (docs/cases/kernel.md) fall short of these for the B-splines, which are pre-asymptotic there
-// (at n = 16, h/dx = 2.2, the quartic's knot at h/5 lies 0.44 dx from the centre, and its local
-// slopes scatter); the Wendland functions, one piece each, are not.
-struct Theory {
-  double order[3];
-  double band;  // the measured deficits above plus a margin
-  const char* why;
-  // The bound err n^p <= C at a sweep's finest level (every tier's), p below the order: C is 1.5
-  // times the largest err n^p the independent evaluation gives on n = 64..512 (64..256 for C6).
-  double p[3], C[3];
-};
-const char* const why_pieces = "trapezoidal lattice sum of a piecewise polynomial: the jump of its m-th derivative "
-                               "on the spheres r = q_k h decays as |k|^-(m + 1 + (d-1)/2) in Fourier space";
-const char* const why_wendland = "trapezoidal lattice sum of a one-piece Wendland function: its Fourier transform "
-                                 "decays as |k|^-(e + 1 + (d-1)/2) from (1-q)^e at the edge and as |k|^-(d + p) from "
-                                 "the odd power q^p at the origin, the slower of the two";
-const std::map<std::string, Theory> theory = {
-    // Band 0.6: the largest deficit measured, 0.55 (2D on 16..128), plus 0.05. Its bound: C = 1.5
-    // times the larger err n^p measured at n = 128 and 256 (the error oscillates with n).
-    {"cubic_spline", {{4.0, 4.5, 5.0}, 0.6, why_pieces, {3.5, 4.0, 4.5}, {92.0, 385.0, 1600.0}}},
-    // Band 0.8: with the harness's 2 se (0.78-0.98 on the quick levels) it holds the measured
-    // deficits 1.20 and 1.18 (1D, 2D) with 0.38 to spare. Bounds at p = order - band: C = 1.5 times
-    // the largest err n^p at 64..512, which falls with n.
-    {"quartic_spline", {{5.0, 5.5, 6.0}, 0.8, why_pieces, {4.2, 4.7, 5.2}, {708.0, 3030.0, 10400.0}}},
-    // Band 0.8: the largest measured difference is 0.44 (3D, 7.44 against 7). C = 1.5 times the
-    // largest err n^p at 64..512.
-    {"quintic_spline", {{6.0, 6.5, 7.0}, 0.8, why_pieces, {5.2, 5.7, 6.2}, {4290.0, 16700.0, 62100.0}}},
-    // Band 0.3 (the acceptance rule's largest): the largest measured deficit is 0.17 (C2 1D, 3.83 against 4).
-    // C = 1.5 times the largest err n^p at 64..512 (64..256 for C6), which falls with n.
-    {"wendland_c2", {{4.0, 5.0, 6.0}, 0.3, why_wendland, {3.5, 4.5, 5.5}, {121.0, 4880.0, 77700.0}}},
-    {"wendland_c4", {{6.0, 7.0, 8.0}, 0.3, why_wendland, {5.5, 6.5, 7.5}, {17700.0, 1.47e6, 2.95e7}}},
-    {"wendland_c6", {{8.0, 9.0, 10.0}, 0.3, why_wendland, {7.5, 8.5, 9.5}, {8.69e6, 7.54e8, 1.86e10}}},
-};
-
 OrderClaims orders(const Params& p) {
   const Theory& t = theory.at(p.text("kernel"));
   OrderClaims c;
-  for (int d = 0; d < 3; ++d) c["sum_" + std::to_string(d + 1) + "d"] = {t.order[d], t.band, t.why, {}};
+  for (int d = 0; d < 3; ++d) c["sum_" + std::to_string(d + 1) + "d"] = {t.order[d], band, t.why, {}};
   return c;
 }
 
@@ -276,9 +287,14 @@ std::vector<std::vector<std::string>> variants() {
   return v;
 }
 
-// The 3D sum's cost grows as n^3: full alone goes to n = 1024 (CPU times: docs/cases/kernel.md).
-const Levels cubic_levels = {.quick = {16, 32, 64, 128}, .standard = {16, 32, 64, 128, 256},
-                             .full = {16, 32, 64, 128, 256, 512, 1024}};
+// The B-splines' envelopes leave their pre-asymptotic scatter (local orders 0.3 to 0.5 off at
+// n = 16..64 in 3D) by n = 64, so their standard sweep reaches n = 512 (1.5 s for the quartic's five
+// shifts of P); the Wendland functions reach round-off beyond 512 (C6 1e-15 there, C4 3D 4e-14),
+// where the fit would level off: full stops at 512 for them, at 256 for C6.
+const Levels spline_levels = {.quick = {16, 32, 64, 128}, .standard = {32, 64, 128, 256, 512},
+                              .full = {16, 32, 64, 128, 256, 512, 1024}};
+const Levels wendland_levels = {.quick = {16, 32, 64, 128}, .standard = {16, 32, 64, 128, 256},
+                                .full = {16, 32, 64, 128, 256, 512}};
 
 const Registration reg{Case{
     .name = "kernel",
@@ -288,20 +304,20 @@ const Registration reg{Case{
     .params = {integer_param("n", 32, "lattice points per unit length"),
                real_param("h", 0.137, "support radius (not a multiple of dx: 1D sums are exact then)", 0.0),
                choice_param("kernel", "cubic_spline", "the kernel (sph/kernel/kernels.hpp)", sph::kernel_names())},
-    .levels = cubic_levels,
+    .levels = spline_levels,
     .orders = orders,
-    .error_defs = {{"sum_1d", "max over 32 shifts of h within [h, h + 2 dx) of |dx sum_j W(x_j, h) - 1|, 1D lattice (20)"},
-                   {"sum_2d", "max over 32 shifts of h within [h, h + 2 dx) of |dx^2 sum_j W(x_j, h) - 1|, 2D lattice (20)"},
-                   {"sum_3d", "max over 32 shifts of h within [h, h + 2 dx) of |dx^3 sum_j W(x_j, h) - 1|, 3D lattice (20)"}},
+    .error_defs = {{"sum_1d", "max over h' = h + k dx/16 in [h, h + P dx), P the knots' period (cubic 2, quartic 5, quintic 3, Wendland 2), of |dx sum_j W(x_j, h') - 1| (h'/h)^p, p the predicted order, 1D lattice (20)"},
+                   {"sum_2d", "max over h' = h + k dx/16 in [h, h + P dx), P the knots' period (cubic 2, quartic 5, quintic 3, Wendland 2), of |dx^2 sum_j W(x_j, h') - 1| (h'/h)^p, p the predicted order, 2D lattice (20)"},
+                   {"sum_3d", "max over h' = h + k dx/16 in [h, h + P dx), P the knots' period (cubic 2, quartic 5, quintic 3, Wendland 2), of |dx^3 sum_j W(x_j, h') - 1| (h'/h)^p, p the predicted order, 3D lattice (20)"}},
     .variants = variants(),
-    // The higher-order kernels' errors reach round-off beyond n = 512 (Wendland C6 1e-14 to 1e-15
-    // at 512; C4 3D 3.5e-14), where the fit would level off: full stops at 512, at 256 for C6.
     .levels_for = [](const Params& p) {
       const std::string k = p.text("kernel");
-      Levels l = cubic_levels;
-      if (k == "wendland_c6") l.full = {16, 32, 64, 128, 256};
-      else if (k != "cubic_spline") l.full = {16, 32, 64, 128, 256, 512};
-      return l;
+      if (k.starts_with("wendland")) {
+        Levels l = wendland_levels;
+        if (k == "wendland_c6") l.full = {16, 32, 64, 128, 256};
+        return l;
+      }
+      return spline_levels;
     },
     .run = run,
     .gates = gates,
