@@ -9,9 +9,13 @@
 #include <cmath>
 #include <filesystem>
 #include <set>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "verification/cases/shock_tubes/errors.hpp"
 #include "verification/commands/ic.hpp"
+#include "verification/snapshot/snapshot.hpp"
 
 namespace fs = std::filesystem;
 using namespace sphv;
@@ -213,6 +217,45 @@ TEST_CASE("swift ic: SmoothingLength is the support radius over SWIFT's publishe
       const double rho = (x < 1.0 ? pr.left : pr.right).rho;
       const double support = hfact * std::pow(r.gas.at("Masses")[i] / rho, 1.0 / one.dim);
       CHECK(r.gas.at("SmoothingLength")[i] * published[one.dim] == Approx(support).epsilon(1e-6));
+    }
+  }
+}
+
+// Reading: two real SWIFT snapshots (verification/tests/data/README.md: SWIFT's 1D Sod and 3D
+// Sedov examples, cubic spline) give sphv's h = kernel_gamma x SmoothingLengths with SWIFT's
+// published kernel_gamma for the dimension (1.732051 in 1D, 1.825742 in 3D, src/kernel_hydro.h),
+// typed here; the file's own /HydroScheme Kernel gamma must state the same value. Tolerance 1e-6:
+// the attribute and the lengths are float32 (7 digits).
+TEST_CASE("swift snapshot: h is SmoothingLengths times SWIFT's published kernel_gamma (known answer)", "[score]") {
+  for (const auto& [name, published] : {std::pair<std::string, double>{"swift_sod1d_orig_t0.2.hdf5", 1.732051},
+                                        {"swift_sedov3d_lattice32_t0.05.hdf5", 1.825742}}) {
+    INFO(name);
+    const fs::path file = fs::path(SPHV_SOURCE_DIR) / "verification/tests/data" / name;
+    const hid_t f = H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    REQUIRE(f >= 0);
+    const hid_t scheme = H5Gopen2(f, "/HydroScheme", H5P_DEFAULT);
+    REQUIRE(scheme >= 0);
+    CHECK(attribute<double>(scheme, "Kernel gamma", H5T_NATIVE_DOUBLE, 1)[0] == Approx(published).epsilon(1e-6));
+    H5Gclose(scheme);
+    const hid_t gas = H5Gopen2(f, "/PartType0", H5P_DEFAULT);
+    REQUIRE(gas >= 0);
+    const char* lengths = H5Lexists(gas, "SmoothingLengths", H5P_DEFAULT) > 0 ? "SmoothingLengths" : "SmoothingLength";
+    const hid_t d = H5Dopen2(gas, lengths, H5P_DEFAULT);
+    REQUIRE(d >= 0);
+    const hid_t space = H5Dget_space(d);
+    const auto n = static_cast<std::size_t>(H5Sget_simple_extent_npoints(space));
+    H5Sclose(space);
+    std::vector<double> raw(n);
+    REQUIRE(H5Dread(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, raw.data()) >= 0);
+    H5Dclose(d);
+    H5Gclose(gas);
+    H5Fclose(f);
+    const Snapshot s = read_snapshot(file);
+    REQUIRE(s.has("h"));
+    REQUIRE(s.columns.at("h").size() == n);
+    for (std::size_t i = 0; i < n; ++i) {
+      INFO("particle " << i);
+      REQUIRE(s.columns.at("h")[i] == Approx(published * raw[i]).epsilon(1e-6));
     }
   }
 }
