@@ -140,7 +140,7 @@ def claim_notes(ss):
             if r["outcome"] == "known failure":
                 item = (r["error"], f"known failure of order {expected_text(r)}", known_text(r))
             elif num(c.get("expected")):
-                item = (r["error"], f"order {c['expected']:g} ± {c.get('band', 0):g}", c.get("why", ""))
+                item = (r["error"], claim_order_text(c), c.get("why", ""))
             else:
                 item = (r["error"], "no order claimed", r.get("why", "") or c.get("why", ""))
             if item[2] and item not in items:
@@ -177,6 +177,13 @@ def errors_of(s):
     for run in s["runs"]:
         names += [e for e in run.get("errors", {}) if e not in names]
     return names
+
+
+def claim_order_text(c):
+    """A claim as words: "order 1 ± 0.3", or "order at least 0.74" for a one-sided claim."""
+    if c.get("at_least"):
+        return f"order at least {c['expected']:g}"
+    return f"order {c['expected']:g} ± {c.get('band', 0):g}"
 
 
 def claim(s, error):

@@ -100,7 +100,13 @@ def order_tex(row):
 
 
 def expected_tex(row):
-    return f"${row['expected']:.3g} \\pm {row.get('band', 0):.3g}$" if num(row.get("expected")) else "--"
+    """The claim: "$1 \\pm 0.3$", or "$\\geq 0.74$" for a one-sided claim (its window has no upper edge)."""
+    if not num(row.get("expected")):
+        return "--"
+    window = list(row.get("window") or []) + [None, None]
+    if num(window[0]) and not num(window[1]):
+        return f"$\\geq {window[0]:.3g}$"
+    return f"${row['expected']:.3g} \\pm {row.get('band', 0):.3g}$"
 
 
 def levels_tex(s):
