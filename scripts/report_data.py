@@ -89,6 +89,17 @@ def expected_text(row):
     return text + f" [{lo:.3g}, {hi:.3g}]" if num(lo) and num(hi) else text
 
 
+def claim_tex(row, missing):
+    """The claim in LaTeX: "$1 \\pm 0.3$", or "$\\geq 0.74$" for a one-sided claim (its window has no
+    upper edge); `missing` where no order is claimed."""
+    if not num(row.get("expected")):
+        return missing
+    window = list(row.get("window") or []) + [None, None]
+    if num(window[0]) and not num(window[1]):
+        return f"$\\geq {window[0]:.3g}$"
+    return f"${row['expected']:.3g} \\pm {row.get('band', 0):.3g}$"
+
+
 def local_text(row):
     """The local orders between neighbouring levels, coarse to fine (the asymptotic range)."""
     local = [f2(p) for p in row.get("local_orders") or [] if num(p)]

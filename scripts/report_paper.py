@@ -6,7 +6,7 @@ the hydrodynamics cases with each known failure beside the experiment that conve
 
 The numbers are the harness's: the window of a claim is the acceptance interval its order check
 recorded in sweep.json (or a "window" the row or the claim carries), never one computed here."""
-from report_data import OUTCOMES, f2, num, series, variant_named
+from report_data import OUTCOMES, claim_tex, f2, num, series, variant_named
 import re
 
 import report_figures as figs
@@ -100,13 +100,7 @@ def order_tex(row):
 
 
 def expected_tex(row):
-    """The claim: "$1 \\pm 0.3$", or "$\\geq 0.74$" for a one-sided claim (its window has no upper edge)."""
-    if not num(row.get("expected")):
-        return "--"
-    window = list(row.get("window") or []) + [None, None]
-    if num(window[0]) and not num(window[1]):
-        return f"$\\geq {window[0]:.3g}$"
-    return f"${row['expected']:.3g} \\pm {row.get('band', 0):.3g}$"
+    return claim_tex(row, "--")
 
 
 def levels_tex(s):
