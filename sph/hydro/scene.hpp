@@ -70,11 +70,17 @@ constexpr Writes writes_of() {
   }
 }
 
-// The particles with the geometry their pair loops need.
+template <int D>
+class VerletList;
+
+// The particles with the geometry their pair loops need. lists: the reused lists `list` was
+// selected from (search/verlet_list.hpp), given by evolve: a density phase that sets h
+// (schemes/chapter.hpp) selects `list` from them anew for the h it sets (null: list is fixed).
 template <int D>
 struct Neighbourhood {
   const NeighbourList& list;
   const Box<D>& box;
+  VerletList<D>* lists = nullptr;
 };
 
 // A term that only caps the copies of its scene's pair loop the build compiles (core/isa.hpp), for

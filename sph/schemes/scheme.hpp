@@ -62,12 +62,10 @@ HydroOutcome evolve(S& s, Particles<D>& p, const Box<D>& box, const HydroControl
       s.after_step(q, box);
     };
   }
-  auto rates = [&](Particles<D>& q, const Neighbourhood<D>& nb, Derivatives<D>& d) {
-    s.density(q, nb);
-    s.force(q, nb, d);
-  };
+  auto density = [&](Particles<D>& q, const Neighbourhood<D>& nb) { s.density(q, nb); };
+  auto force = [&](Particles<D>& q, const Neighbourhood<D>& nb, Derivatives<D>& d) { s.force(q, nb, d); };
   auto time_step = [&](const Particles<D>& q, const Derivatives<D>& d) { return s.time_step(q, d, c.step); };
-  return evolve_rates<D>(rates, time_step, p, box, c, hooks, S::reorderable);
+  return evolve_rates<D>(density, force, time_step, p, box, c, hooks, S::reorderable);
 }
 
 }  // namespace sph

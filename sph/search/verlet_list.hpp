@@ -1,7 +1,9 @@
 #pragma once
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
+#include <span>
 #include <vector>
 
 #include <omp.h>
@@ -57,11 +59,32 @@ class VerletList {
   // The list holds exactly the pairs with |r_ij| < max(h_i, h_j) now, as a fresh search would (the
   // padded list filtered, in its order), so no pair loop of the evaluation visits the padding.
   const NeighbourList& update(const std::vector<Vec<D>>& x, const std::vector<double>& h, const Box<D>& box) {
+    const auto t0 = std::chrono::steady_clock::now();
     if (!covers(x, h, box)) search(x, h, box);
     select(x, h, box);
+    seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return active_;
   }
   long searches() const { return searches_; }
+  // The time spent in update and refresh so far (`sphv bench` shows it as the step's search phase).
+  double seconds() const { return seconds_; }
+  // The next update or refresh searches anew, whether or not the lists cover (a step timed with a
+  // fresh search at every evaluation).
+  void expire() { searches_at_expiry_ = searches_ + 1; }
+
+  // For a caller that changes h between updates (the (50) iteration inside a density phase): a new
+  // search unless the padded lists still cover the particles at x with radii h; returns whether it
+  // searched. The pairs update returns are then those of the last update until the next one.
+  bool refresh(const std::vector<Vec<D>>& x, const std::vector<double>& h, const Box<D>& box) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const bool searched = !covers(x, h, box);
+    if (searched) search(x, h, box);
+    seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return searched;
+  }
+  // Particle i's candidates: its row of the padded lists, every j within (1 + skin) max(h0_i, h0_j)
+  // at the last search, a superset of the pairs that interact while the lists cover.
+  std::span<const int> candidates(std::size_t i) const { return list_.of(row_.empty() ? i : row_[i]); }
 
   // For a caller that stores its particles in the visiting order of the last search (evolve, see
   // hydro/storage_order.hpp): returns that order and renumbers the lists so that particle order[k]
@@ -89,7 +112,7 @@ class VerletList {
 
  private:
   bool covers(const std::vector<Vec<D>>& x, const std::vector<double>& h, const Box<D>& box) const {
-    if (searches_ == 0 || x.size() != x0_.size() || box.lo != box_.lo || box.hi != box_.hi || box.periodic != box_.periodic) return false;
+    if (searches_ < searches_at_expiry_ || x.size() != x0_.size() || box.lo != box_.lo || box.hi != box_.hi || box.periodic != box_.periodic) return false;
     const Vec<D> L = box.length(), wrap = box.wrap_factor();
     const double s = used_skin_;
     bool each = true, finite = true;
@@ -206,6 +229,8 @@ class VerletList {
   std::vector<double> h0_;
   Box<D> box_;
   long searches_ = 0;
+  long searches_at_expiry_ = 1;  // the lists serve once searches_ reaches it (expire)
+  double seconds_ = 0.0;
 };
 
 }  // namespace sph
