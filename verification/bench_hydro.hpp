@@ -2,8 +2,9 @@
 // The hydro part of `sphv bench`, for the scheme named (sph/schemes/; the chapter's by default, the
 // one the blast cases verify), with its default forms: its force loop, and a full kick-drift-kick
 // step: `evolve`'s own (the scheme's phases and time step, neighbour lists reused while they cover,
-// sph/hydro/evolve.hpp), and with a fresh search every step; and evolve's step from the particles
-// stored in a random order, with and without its reordering of them (sph/hydro/storage_order.hpp).
+// sph/hydro/evolve.hpp) with its phases, and with a fresh search every step; and evolve's step from
+// the particles stored in a random order, with and without its reordering of them
+// (sph/hydro/storage_order.hpp).
 #include <algorithm>
 #include <chrono>
 #include <functional>
@@ -186,19 +187,18 @@ inline HydroTimes time_hydro_step(const std::string& scheme, sph::Particles<3>& 
   t.pairs = static_cast<double>(nl.pairs());
   with_bench_scheme(scheme, [&](auto& s) {
     t.forces = timer(whole([&] { s.force(p, Neighbourhood<3>{nl, box}, d); }));
-    // The scheme's step, its rates on lists searched afresh at every evaluation.
-    GridSearchBuffers<3> buffers;  // kept, as evolve's lists keep theirs: fresh ones fault pages in every step
+    // The scheme's step, its rates on lists searched afresh at every evaluation (with evolve's skin,
+    // within which a density phase may set h), their buffers kept as evolve's are: fresh ones fault
+    // pages in every step.
+    VerletList<3> fresh(HydroControls{}.skin);
     auto derivs = [&](Particles<3>& q, Derivatives<3>& dd) {
-      grid_search<3>(q.x, q.h, box, nl, buffers);
-      const Neighbourhood<3> nb{nl, box};
+      fresh.expire();
+      const Neighbourhood<3> nb{fresh.update(q.x, q.h, box), box, &fresh};
       s.density(q, nb);
       s.force(q, nb, dd);
     };
     derivs(p, d);
-    t.step_fresh_search = timer(whole([&] {
-      kdk_leapfrog_step(p, d, at_t, 1e-4, derivs);
-      if constexpr (requires { s.after_step(p, box); }) s.after_step(p, box);
-    }));
+    t.step_fresh_search = timer(whole([&] { kdk_leapfrog_step(p, d, at_t, 1e-4, derivs); }));
   });
   EvolveStepTimes e = time_evolve_step(scheme, p, box, timer);
   t.step = e.step, t.searches_per_step = e.searches_per_step, t.phases = std::move(e.phases);

@@ -12,11 +12,14 @@
 namespace sph {
 
 // Time derivatives the terms of a scene accumulate, and mu_max = max_j |mu_ij| (46) of the
-// artificial viscosity (0 without), which the Courant condition reads.
+// artificial viscosity (0 without), which the Courant condition reads. h_set: the evaluation sets h
+// (a density phase solving (50), schemes/chapter.hpp), and dhdt only predicts h for the next one
+// (time/leapfrog.hpp).
 template <int D>
 struct Derivatives {
   std::vector<Vec<D>> dvdt;
   std::vector<double> dudt, drhodt, dhdt, mu_max;
+  bool h_set = false;
   void reset(std::size_t n) {  // zeros written by all threads: megabytes in a large run
     for (auto* a : {&dudt, &drhodt, &dhdt, &mu_max}) a->resize(n);
     dvdt.resize(n);
