@@ -18,18 +18,22 @@ namespace sph {
 // together, per particle, by Newton-Raphson on
 //   f_i(h_i) = rho_i(h_i) - m_i (hfact / h_i)^D = 0,
 // with rho_i the sum (27) over the pairs at h_ij = (h_i + h_j)/2 and
-//   f_i'(h_i) = d rho_i / d h_i + D m_i hfact^D / h_i^(D+1),   d rho_i / d h_i = sum_j m_j dW/dh(r_ij, h_ij) / 2
-// (the self term's dW/dh(0, h_i) whole), dW/dh = -(D W + r dW/dr) / h for every kernel
+//   f_i'(h_i) = d rho_i / d h_i + D m_i hfact^D / h_i^(D+1),   d rho_i / d h_i = sum_j m_j dW/dh(r_ij, h_ij)
+// (with the self term's dW/dh(0, h_i)), dW/dh = -(D W + r dW/dr) / h for every kernel
 // W = h^-D w(r/h). The neighbours' h_j are those of the pass before (a Jacobi sweep), so the
-// result does not depend on the order of the particles or on the thread count.
+// result does not depend on the order of the particles or on the thread count. They change in
+// the same pass, mostly alike, so d rho_i / d h_i is taken with h_j changing as h_i does (h_ij's
+// own derivative, not the half of it that h_i alone gives): with the half, a pass of particles
+// whose rho depends strongly on h overshoots twofold together and oscillates about the root.
 //
 // A pass evaluates rho_i and f_i' at the particles' current h and proposes a new h_i: Newton's,
 // kept inside the bracket of h_i the signs of f_i have shown (below: f_i < 0, above: f_i > 0);
 // where Newton's step leaves it (or f_i' <= 0) the fixed-point value of (50), hfact (m_i/rho_i)^(1/D),
 // and where that leaves it too, the bracket's midpoint (bisection). h is capped at h_max as in
-// smoothing_length_iterate. A particle whose proposed h differs from its h by less than tol h
-// (SmoothingLengthControl::tol, 1e-3, the tolerance of the iteration over all particles) has
-// converged: its h and its rho, the sum (27) at that h, are kept. The others take the proposed h,
+// smoothing_length_iterate. A particle whose h fits (50) with its rho to tol, |hfact
+// (m_i/rho_i)^(1/D) - h_i| < tol h_i (SmoothingLengthControl::tol, 1e-3: the criterion of the
+// iteration over all particles, smoothing_length_iterate), has converged: its h and its rho, the
+// sum (27) at that h, are kept. The others take the proposed h,
 // and the next pass evaluates only them and their neighbours (whose rho changed with h_ij). Where
 // those are at least half the particles, every particle of the pass takes its proposed h, however
 // small the change: the next pass evaluates nearly all of them anyway, and each then starts at its
@@ -69,6 +73,7 @@ class FixedNeighboursNewton {
     copy_components<D>(p.x, xs_);
     drho_.resize(n);
     next_.resize(n);
+    off_.resize(n);
     lo_.assign(n, 0.0);
     hi_.assign(n, std::numeric_limits<double>::infinity());
     mark_.assign(n, 0);
@@ -87,7 +92,7 @@ class FixedNeighboursNewton {
       auto changes = [&](double tol) {
         changed_.clear();
         for (int i : which_)
-          if (std::abs(next_[i] - p.h[i]) >= tol * p.h[i] && next_[i] != p.h[i]) changed_.push_back(i);
+          if (off_[i] >= tol && next_[i] != p.h[i]) changed_.push_back(i);
       };
       changes(c.tol);
       if (changed_.empty()) {
@@ -137,7 +142,7 @@ class FixedNeighboursNewton {
         const double r = std::sqrt(distance2<D>(i, j, xs_, L, wrap)), hij = h_ij(hi, h[j]);
         const double W = K::W(r, hij);
         w[t] = m[j] * W;
-        dw[t] = -0.5 * m[j] * (D * W + r * K::dWdr(r, hij)) / hij;  // dW/dh_ij dh_ij/dh_i
+        dw[t] = -m[j] * (D * W + r * K::dWdr(r, hij)) / hij;  // dW/dh_ij, h_i and h_j changing alike
       }
       for (int t = 0; t < nb; ++t) rho += w[t], drho += dw[t];
     }
@@ -161,34 +166,37 @@ class FixedNeighboursNewton {
     return marked;
   }
 
-  // next_[i]: the h that i's pass proposes (above).
+  // next_[i]: the h that i's pass proposes (above); off_[i]: how far h_i is from (50) with rho_i.
   void propose(std::size_t i, const Particles<D>& p, const SmoothingLengthControl& c) {
     const double h = p.h[i], rho = p.rho[i];
     const double target = p.m[i] * kernel_power<D>(c.hfact / h);  // (50)'s density at h
     const double f = rho - target, fp = drho_[i] + D * target / h;
     double& lo = lo_[i];
     double& hi = hi_[i];
-    // The bracket as f's sign shows it now; a side the neighbours' changes have overtaken is dropped.
+    // The bracket as f's sign shows it now; a side the neighbours' changes have overtaken, or
+    // brought within tol h of h (the root moved past it), is dropped.
     if (f < 0.0) {
       lo = h;
-      if (hi <= h) hi = std::numeric_limits<double>::infinity();
+      if (hi <= h * (1.0 + c.tol)) hi = std::numeric_limits<double>::infinity();
     } else if (f > 0.0) {
       hi = h;
-      if (lo >= h) lo = 0.0;
+      if (lo >= h * (1.0 - c.tol)) lo = 0.0;
     }
     // (50)'s fixed point lies on the side f points to (above h for f < 0), so with an open bracket
     // (hi infinite) one of the first two is inside and the midpoint is taken only between two bounds.
     auto inside = [&](double x) { return x > lo && x < hi; };
+    const double fixed = c.hfact * std::pow(p.m[i] / rho, 1.0 / D);  // (50)
+    off_[i] = std::abs(fixed - h) / h;
     double h_new = h;
     if (f != 0.0) {
-      const double newton = h - f / fp, fixed = c.hfact * std::pow(p.m[i] / rho, 1.0 / D);  // (50)
+      const double newton = h - f / fp;
       h_new = fp > 0.0 && inside(newton) ? newton : inside(fixed) ? fixed : 0.5 * (lo + hi);
     }
     next_[i] = h_new < c.h_max ? h_new : c.h_max;
   }
 
   Components<D> xs_;  // the positions' columns (kept from one phase to the next, Scene::xs)
-  std::vector<double> drho_, next_, lo_, hi_;
+  std::vector<double> drho_, next_, off_, lo_, hi_;
   std::vector<unsigned char> mark_;
   std::vector<int> which_, changed_;
 };

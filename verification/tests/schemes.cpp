@@ -59,11 +59,15 @@ std::pair<double, double> off_27_and_50(const sph::Particles<2>& p, const sph::B
   return {worst_rho, worst_h};
 }
 
-// Every particle's pairs, each row sorted (a fresh search and the reused lists order them otherwise).
-std::vector<std::vector<int>> sorted_rows(const sph::NeighbourList& nl, std::size_t n) {
-  std::vector<std::vector<int>> rows(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    rows[i].assign(nl.of(i).begin(), nl.of(i).end());
+// Every particle's pairs with |r_ij| < max(h_i, h_j), each row sorted (a fresh search and the
+// reused lists order them otherwise, and the reused lists hold a margin beyond).
+std::vector<std::vector<int>> sorted_rows(const sph::NeighbourList& nl, const sph::Particles<2>& p,
+                                          const sph::Box<2>& box) {
+  const sph::Vec<2> L = box.length(), wrap = box.wrap_factor();
+  std::vector<std::vector<int>> rows(p.size());
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    for (int j : nl.of(i))
+      if (sph::min_image<2>(p.x[i] - p.x[j], L, wrap).norm() < std::max(p.h[i], p.h[j])) rows[i].push_back(j);
     std::sort(rows[i].begin(), rows[i].end());
   }
   return rows;
@@ -90,8 +94,8 @@ struct Forked {
 // lists' padding and several passes are needed): rho is the summation density (27) of the returned
 // h as a direct sum over all pairs gives it (1e-12: round-off of a few dozen terms), h fits (50)
 // for that rho to 0.1 % (the bound of smoothing_length_iterate's test, tests/hydro.cpp: ten times
-// Phantom's default tolerance; each particle stops when its Newton step is below tol = 1e-3 of h),
-// the later passes visit fewer particles than the first, the pairs selected for the force loop are
+// Phantom's default tolerance; a particle stops once h fits (50) to tol = 1e-3),
+// the later passes visit fewer particles than the first, the pairs selected for the force loop hold
 // a fresh search's at the returned h, and one thread and two (every loop forked) give the same h
 // and rho bit for bit.
 TEST_CASE("the chapter's density phase: rho is (27) of the h it returns, h fits (50), fresh pairs, any thread count",
@@ -107,7 +111,7 @@ TEST_CASE("the chapter's density phase: rho is (27) of the h it returns, h fits 
     const sph::NeighbourList& nl = lists.update(p.x, p.h, box);
     sph::FixedNeighboursNewton<2> phase;
     const auto out = phase.solve(p, lists, nl, box, c);
-    return std::make_tuple(out, sorted_rows(nl, p.size()), lists.searches());
+    return std::make_tuple(out, sorted_rows(nl, p, box), lists.searches());
   };
   auto p = gas;
   const auto [out, rows, searches] = solve(p);
@@ -120,7 +124,7 @@ TEST_CASE("the chapter's density phase: rho is (27) of the h it returns, h fits 
   INFO("rho differs from (27) by " << off_rho << ", h from (50) by " << off_h);
   CHECK(off_rho < 1e-12);
   CHECK(off_h < 1e-3);
-  CHECK(rows == sorted_rows(sph::grid_search<2>(p.x, p.h, box), p.size()));
+  CHECK(rows == sorted_rows(sph::grid_search<2>(p.x, p.h, box), p, box));
   auto q = gas;
   {
     const Forked two(2);
