@@ -2,16 +2,18 @@
 # Tests of scripts/bundle.sh (ctest bundle_*).
 #   bundle_test.sh compiles RESULTS WORK   bundles RESULTS, compiles both .tex files with pdflatex
 #                                         (one case lengthened past a page: its tables must break across
-#                                         pages), checks no float is too large, no line overfull and the
-#                                         section at most 4 pages; exit 77 (ctest:
+#                                         pages), checks no float is too large, no line overfull, the
+#                                         section at most 4 pages, no Type 3 font (pdffonts), the bundle at
+#                                         most 50 MB and reproduce.sh executable; exit 77 (ctest:
 #                                         skipped) with a message when pdflatex is absent
 #   bundle_test.sh dirty RESULTS WORK      a copy of the scripts in a scratch git repository: a tracked
 #                                         change or an untracked file under verification/ is refused
 #                                         (exit 2), --allow-dirty and a clean tree are not
-#   bundle_test.sh reproduce RESULTS WORK  a bundle of RESULTS relabelled as produced at the commit of a
-#                                         scratch repository (bundle.sh there a stub), by its full and its
-#                                         12-character hash: reproduce.sh runs in a clone at that commit
-#                                         and refuses one at another
+#   bundle_test.sh reproduce RESULTS WORK  a bundle of one sweep of RESULTS made by a scratch repository
+#                                         (sphv's scripts, a stub build whose sphv writes that sweep): copied
+#                                         into an empty folder outside any checkout, its reproduce.sh unpacks
+#                                         source.tar.gz, "builds", reruns and rebuilds the bundle there; a
+#                                         changed archive and results of two commits are refused
 set -uo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 mode=$1 results=$(cd "$2" && pwd) work=$3
@@ -48,28 +50,43 @@ EOF_PY
     ! grep -q "Float too large" "$log" || fail "$(grep -m1 "Float too large" "$log") ($log)"
     ! grep -qF 'Overfull \hbox' "$log" || fail "$(grep -m1 -F 'Overfull \hbox' "$log") ($log)"
   done
+  command -v pdffonts >/dev/null || fail "pdffonts not found (poppler-utils: bash scripts/install-deps.sh --tex installs it)"
+  for pdf in example.pdf example-supplement.pdf; do
+    type3=$(pdffonts "$work/bundle/$pdf" | grep -c "Type 3")
+    [ "$type3" -eq 0 ] || fail "$pdf embeds $type3 Type 3 font(s): $(pdffonts "$work/bundle/$pdf" | grep "Type 3")"
+  done
+  [ -x "$work/bundle/reproduce.sh" ] || fail "reproduce.sh is not executable"
+  size=$(du -sm "$work/bundle" | cut -f1)
+  [ "$size" -le 50 ] || fail "the bundle is $size MB (at most 50)"
   pages=$(grep -o '([0-9]* pages\?' "$work/bundle/example.log" | tr -dc 0-9)
   [ -n "$pages" ] && [ "$pages" -le 4 ] || fail "verification.tex compiles to ${pages:-?} pages (at most 4)"
   for pdf in $(grep -o 'figures/[^}]*' "$work/bundle/verification.tex" "$work/bundle/verification-supplement.tex" | cut -d: -f2); do
     [ -s "$work/bundle/$pdf" ] || fail "included figure $pdf missing"
   done
-  echo "PASS: verification.tex $pages pages; supplement $(grep -o '([0-9]* pages\?' "$work/bundle/example-supplement.log" | tr -d '(')"
+  echo "PASS: verification.tex $pages pages; supplement $(grep -o '([0-9]* pages\?' "$work/bundle/example-supplement.log" | tr -d '('); no Type 3 font; $size MB"
   exit 0
 fi
 
 if [ "$mode" = reproduce ]; then
+  # A scratch repository holding sphv's scripts, with a stub build: its "sphv verify" writes the
+  # fixture's kernel sweep, labelled with the commit the build records (SPHV_ARCHIVE_COMMIT, set
+  # by reproduce.sh as verification/build_state.cmake reads it). Everything else is real:
+  # source.tar.gz is `git archive` of that commit, reproduce.sh unpacks and runs it.
   repo=$work/repo
-  mkdir -p "$repo/scripts" && cd "$repo" || exit 1
-  printf '#!/usr/bin/env bash\necho "bundle.sh stub: $*"\n' > scripts/bundle.sh
-  git init -q . && git add . && git -c user.name=t -c user.email=t@t commit -qm scratch || fail "git"
-  commit=$(git rev-parse HEAD)
-  py=$(bash "$root/scripts/find-python.sh") || exit 1
-  git clone -q "$repo" "$work/clone" || fail "git clone"
-  # sphv records the full hash; results from before it did hold 12 characters: both reproduce.
-  for recorded in "$commit" "${commit:0:12}"; do
-    # One sweep is enough for what reproduce.sh does (the dirty test's choice too): keep it quick.
-    rm -rf "$work/results" && mkdir -p "$work/results" && cp -r "$results/kernel" "$work/results/"
-    "$py" - "$work/results" "$recorded" <<'EOF_PY' || fail "relabelling the results"
+  mkdir -p "$repo/fixture" && cp -r "$root/scripts" "$repo/" && cp -r "$results/kernel" "$repo/fixture/" || fail "scratch repository"
+  cat > "$repo/scripts/build.sh" <<'EOF_BUILD'
+#!/usr/bin/env bash
+# Stub build (bundle_test.sh reproduce): build/sphv copies fixture/ labelled with the commit the build
+# records, as verification/build_state.cmake does: an unpacked archive's from SPHV_ARCHIVE_COMMIT.
+cd "$(dirname "$0")/.." && mkdir -p build
+echo "${SPHV_ARCHIVE_COMMIT:-unknown}" > build/commit
+cat > build/sphv <<'EOF_SPHV'
+#!/usr/bin/env bash
+[ "$1 $2" = "verify --tier" ] && [ "$4" = --out ] || { echo "sphv stub: unexpected arguments: $*" >&2; exit 2; }
+here=$(cd "$(dirname "$0")/.." && pwd)
+rm -rf "$5" && mkdir -p "$5" && cp -r "$here/fixture/kernel" "$5/" || exit 3
+py=$(bash "$here/scripts/find-python.sh") || exit 1
+"$py" - "$5" "$(cat "$here/build/commit")" <<'EOF_PY'
 import json, sys
 from pathlib import Path
 for f in Path(sys.argv[1]).glob("**/sweep.json"):
@@ -78,15 +95,47 @@ for f in Path(sys.argv[1]).glob("**/sweep.json"):
         r["provenance"]["git_commit"] = sys.argv[2]
     f.write_text(json.dumps(s))
 EOF_PY
-    "$py" "$root/scripts/report.py" "$work/results" --reports "$work/reports" --bundle "$work/bundle" >/dev/null || fail "report.py --bundle"
-    out=$(cd "$work/clone" && git checkout -q "$commit" && bash "$work/bundle/reproduce.sh" 2>&1) ||
-      fail "reproduce.sh of results at $recorded, in a clone at that commit, refused: $out"
-    [ "$out" = "bundle.sh stub: --tier quick --out bundle" ] || fail "reproduce.sh did not run bundle.sh as expected: $out"
-  done
-  cd "$work/clone" && git -c user.name=t -c user.email=t@t commit -q --allow-empty -m later || fail "git commit"
-  out=$(bash "$work/bundle/reproduce.sh" 2>&1); rc=$?
-  [ $rc -eq 2 ] && [[ "$out" == *"check out commit ${commit:0:12}"* ]] || fail "reproduce.sh at another commit: exit $rc: $out"
-  echo "PASS: reproduce.sh runs in a clone at $commit and refuses a clone at another commit"
+echo "sphv stub: verify --tier $3 -> $5"
+EOF_SPHV
+chmod +x build/sphv
+EOF_BUILD
+  cd "$repo" && git init -q . && git add . && git -c user.name=t -c user.email=t@t commit -qm scratch || fail "git"
+  commit=$(git rev-parse HEAD)
+  py=$(bash "$root/scripts/find-python.sh") || exit 1
+  SPHV_ARCHIVE_COMMIT=$commit bash scripts/build.sh && ./build/sphv verify --tier quick --out "$work/results" >/dev/null || fail "stub run"
+  "$py" "$root/scripts/report.py" "$work/results" --reports "$work/reports" --bundle "$work/bundle" --source-repo "$repo" >/dev/null ||
+    fail "report.py --bundle"
+  [ -x "$work/bundle/reproduce.sh" ] || fail "reproduce.sh is not executable"
+  [ "$(gzip -dc "$work/bundle/source.tar.gz" | git get-tar-commit-id)" = "$commit" ] || fail "source.tar.gz is not git archive of $commit"
+  # The bundle copied into an empty folder outside any checkout reruns and rebuilds itself there.
+  copy=$(mktemp -d) && trap 'rm -rf "$copy"' EXIT
+  cp -r "$work/bundle" "$copy/b" && cd / || fail "copy"
+  out=$("$copy/b/reproduce.sh" 2>&1) || fail "reproduce.sh from a copy in $copy: $out"
+  [[ "$out" == *"rebuilt from commit $commit"* ]] || fail "reproduce.sh did not finish: $out"
+  [ -s "$copy/b/reproduced/verification.tex" ] && [ -s "$copy/b/reproduced/source.tar.gz" ] ||
+    fail "reproduce.sh wrote no bundle into $copy/b/reproduced: $out"
+  "$py" - "$copy/b/reproduced/provenance.json" "$commit" <<'EOF_PY' || fail "the rebuilt bundle's provenance: $(cat "$copy/b/reproduced/provenance.json")"
+import json, sys
+p = json.load(open(sys.argv[1]))
+sys.exit(p["git_commits"] != [sys.argv[2]] or p["dirty_runs"] != 0)
+EOF_PY
+  # A changed archive, and results that name no single commit, are refused (exit 2), saying why.
+  printf x >> "$copy/b/source.tar.gz"
+  out=$("$copy/b/reproduce.sh" 2>&1); rc=$?
+  [ $rc -eq 2 ] && [[ "$out" == *"SHA-256"* ]] || fail "reproduce.sh with a changed source.tar.gz: exit $rc: $out"
+  "$py" - "$work/results" <<'EOF_PY' || fail "relabelling"
+import json, sys
+from pathlib import Path
+for f in Path(sys.argv[1]).glob("**/sweep.json"):
+    s = json.loads(f.read_text())
+    s["runs"][0]["provenance"]["git_commit"] = "0" * 40
+    f.write_text(json.dumps(s))
+EOF_PY
+  "$py" "$root/scripts/report.py" "$work/results" --reports "$work/reports" --bundle "$work/mixed" --source-repo "$repo" >/dev/null 2>&1 ||
+    fail "report.py --bundle of mixed results"
+  out=$(bash "$work/mixed/reproduce.sh" 2>&1); rc=$?
+  [ $rc -eq 2 ] && [[ "$out" == *"not one"* ]] || fail "reproduce.sh of results from two commits: exit $rc: $out"
+  echo "PASS: reproduce.sh rebuilds the bundle from a copy in an empty folder ($commit); a changed archive and mixed commits are refused"
   exit 0
 fi
 

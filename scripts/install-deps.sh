@@ -2,12 +2,13 @@
 # Installs the Debian packages sphv needs, when any is missing: directly as root, through
 # sudo when that works without a password, otherwise prints the exact apt-get line and fails.
 # With --tex also pdflatex and the packages the bundle's .tex files use (booktabs, longtable,
-# xcolor: texlive-latex-recommended), for scripts/bundle.sh and the bundle_compiles test.
+# xcolor, natbib: texlive-latex-recommended), and pdffonts (poppler-utils), which checks that the
+# PDFs embed no Type 3 font: for scripts/bundle.sh and the bundle_compiles test.
 set -euo pipefail
 packages=(g++ cmake make ninja-build git libeigen3-dev libgsl-dev libsundials-dev catch2 nlohmann-json3-dev
           libcli11-dev libhdf5-dev libssl-dev libopenmpi-dev openmpi-bin python3-matplotlib python3-numpy)
 case "${1:-}" in
-  --tex) packages+=(texlive-latex-base texlive-latex-recommended) ;;
+  --tex) packages+=(texlive-latex-base texlive-latex-recommended poppler-utils) ;;
   "") ;;
   *) echo "sphv: error: unknown option '$1' (--tex)" >&2; exit 2 ;;
 esac

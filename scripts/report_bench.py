@@ -70,7 +70,7 @@ def bench_body(results, out):
                 (f" ({v[0] / one[0]:.2f}x / {v[1] / one[1]:.2f}x one thread's)" if one and t != "1" else "")
                 for t, v in runs.items())
         body.append(f"<p>Share of peak: the hydro forces at {pk['force_pair_flops']:.0f} floating-point operations a pair "
-                    f"(counted from the source, verification/bench_hydro.hpp) against this CPU's double-precision peak, "
+                    f"(counted from the source, verification/commands/bench_hydro.hpp) against this CPU's double-precision peak, "
                     f"measured ({e(pk['method'])}; {e(pk['isa'])}), the larger of before and after. The peak on several "
                     f"threads against one thread's is what the machine gave the speed-ups (a virtual machine's cores "
                     f"can give well short of their number): " +

@@ -13,6 +13,7 @@ usage: report_test.py RESULTS_DIR WORK_DIR [--mutants FILE] [--dirty]"""
 import html
 import json
 import math
+import os
 import re
 import shutil
 import subprocess
@@ -22,6 +23,8 @@ from urllib.parse import unquote
 
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
+import report_math  # noqa: E402
+import report_paper  # noqa: E402
 import report_tex  # noqa: E402
 from report_check_links import broken_links  # noqa: E402
 from report_data import file_of, num, series, slug  # noqa: E402
@@ -39,7 +42,7 @@ def report(results, reports, *extra):
                           capture_output=True, text=True)
 
 
-def first_screen(index, sweeps):
+def first_screen(index, sweeps, out):
     """The index opens with the verdict, then (when anything fails) the failing rows with links to
     their variants, then one line per case linking its page, and only then the full table."""
     failing = [(s, r) for s in sweeps for r in s["rows"] if r["outcome"] == "fail"]
@@ -54,8 +57,14 @@ def first_screen(index, sweeps):
         section = index[at["failing"]:at["cases"]]
         for s, r in failing:
             href = f"case-{slug(s['case'])}.html#v-{slug(s['variant'])}"
-            expect(re.search(rf"<a href='{re.escape(href)}'>[^<]*</a></td><td class='nw'>{re.escape(r['error'])}</td>", section),
-                   f"failing row {s['case']} {s['variant']} {r['error']} not listed first with a link to {href}")
+            # The error itself links to its convergence figure, where one is drawn.
+            drawn = (out / "fig" / slug(s["case"]) / f"{slug(s['variant'])}_{slug(r['error'])}_convergence.png").is_file()
+            err = re.escape(r["error"])
+            cell = (rf"<a href='case-{re.escape(slug(s['case']))}\.html#fig-{re.escape(slug(s['variant']))}-{re.escape(slug(r['error']))}'>{err}</a>"
+                    if drawn else err)
+            expect(re.search(rf"<a href='{re.escape(href)}'>[^<]*</a></td><td class='nw'>{cell}</td>", section),
+                   f"failing row {s['case']} {s['variant']} {r['error']} not listed first with a link to {href}"
+                   + (" and its figure" if drawn else ""))
         expect("href='#failing'" in index[:at["failing"]], "the verdict line does not link the failing rows")
     cases = index[at["cases"]:at["all"]]
     for case in {s["case"] for s in sweeps}:
@@ -67,7 +76,7 @@ def distinct_figures(out, stdout):
     makes several entries show one file, which the link check cannot see."""
     entries = []
     for page in sorted(out.glob("*.html")):
-        for fig in re.findall(r"<figure>.*?</figure>", page.read_text()):
+        for fig in re.findall(r"<figure(?: id='[^']*')?>.*?</figure>", page.read_text()):
             png = re.search(r"<img src='([^']+)'", fig).group(1)
             pdf = re.search(r"<a href='([^']+\.pdf)'>PDF</a>", fig).group(1)
             entries.append((page.name, unquote(png), unquote(pdf)))
@@ -109,7 +118,7 @@ def kernel_checks(out, sweeps):
         expect((f"case-{slug(case)}.html#kernels" in index) == (case in with_kernels), f"index: kernel link of {case}")
     for (case, label), members in groups.items():
         text = (out / f"case-{slug(case)}.html").read_text()
-        section = text[text.find("id='kernels'"):text.find("<h2>Figures</h2>")]
+        section = text[text.find("id='kernels'"):text.find("<h2>Outcome per error</h2>")]
         stem = out / "fig" / slug(case) / f"kernels_{slug(label)}"
         expect(file_of(stem, "png").is_file() and file_of(stem, "pdf").is_file(), f"{case} {label}: no kernel figure")
         expect(section.find("<figure>") < section.find("<table>"), f"{case}: the kernel table before its figure")
@@ -147,10 +156,29 @@ def bundle_checks(results, work, sweeps):
     main_tex = (work / "bundle" / "verification.tex").read_text()
     said = f"{threads[0]} to {threads[-1]} OpenMP threads per point" if len(threads) > 1 else f"{threads[0]} OpenMP thread"
     expect(said in main_tex, f"verification.tex does not say '{said}'")
-    for case in sorted({s["case"] for s in sweeps} & set(report_tex.HYDRO)):  # the hydrodynamics in the main part
-        expect(f"{{figures/{slug(case)}_" in main_tex, f"verification.tex shows no {case} figure")
+    # Table 1: one line per case, a known failure with the variant that converges instead.
+    table = main_tex[main_tex.find(r"\label{tab:verification}"):main_tex.find(r"\end{tabular}")]
+    for case in {s["case"] for s in sweeps}:
+        lines = [line for line in table.splitlines() if line.startswith(report_math.prose(case) + " &")]
+        expect(len(lines) == 1, f"Table 1 has {len(lines)} lines for {case}")
+        default = min((s for s in sweeps if s["case"] == case), key=lambda s: (s["variant"] != "default", s["variant"]))  # as load() orders
+        row = report_paper.headline(default)
+        if lines and row and row["outcome"] == "known failure":
+            v, r = report_paper.experiment([s for s in sweeps if s["case"] == case], default, row)
+            expect(v is None or report_math.prose(v["variant"]) in lines[0], f"Table 1: {case}'s known failure does not name its experiment")
+        if lines and row and report_paper.window(default, row):
+            lo, hi = report_paper.window(default, row)
+            expect(f"[{lo:.2f}, {hi:.2f}]" in lines[0], f"Table 1: {case} does not show the window [{lo:.2f}, {hi:.2f}] its order check recorded")
+    expect(r"\includegraphics{figures/paper_paper_convergence" in main_tex, "verification.tex has no convergence figure")
+    expect(os.access(work / "bundle" / "reproduce.sh", os.X_OK), "reproduce.sh is not executable")
+    # Provenance with the tool versions and the bundle's time; the references the issue names.
+    expect({"Python", "python3-matplotlib", "libeigen3-dev", "libsundials-dev", "libhdf5-dev", "pdflatex"} <= set(prov.get("tools", {}))
+           and prov.get("bundle_time"), f"provenance.json lacks tool versions or the bundle's time: {sorted(prov)}")
+    refs = (work / "bundle" / "verification-supplement-references.tex").read_text()
+    for key in ("chapter", "toro2009", "sedov1959", "noh1987", "evrard1988", "gresho1990", "mcnally2012", "dehnen2012"):
+        expect(f"]{{{key}}}" in refs, f"the supplement's bibliography lacks {key}")
     supp = (work / "bundle" / "verification-supplement.tex").read_text()
-    included = re.findall(r"\\includegraphics\[[^]]*\]\{figures/([^}]*)\}", supp)
+    included = re.findall(r"\\includegraphics(?:\[[^]]*\])?\{figures/([^}]*)\}", supp)
     shared = sorted({f for f in included if included.count(f) > 1})
     expect(included and not shared, f"supplement figures sharing a file: {shared}")
     known = sum(r["outcome"] == "known failure" for s in sweeps for r in s["rows"])
@@ -188,7 +216,7 @@ def main():
         expect(re.search(rf">{label}</(span|a)>", index), f"index does not count {label}")
     if "known failure" in outcomes:  # the fixture has one
         expect(re.search(r"<td class='known'>known failure</td>", index), "a known failure row is not shown in its own colour")
-    first_screen(index, sweeps)
+    first_screen(index, sweeps, out)
     for s in sweeps:
         page = out / f"case-{slug(s['case'])}.html"
         expect(page.is_file() and f"case-{slug(s['case'])}.html" in index, f"no linked page for {s['case']}")

@@ -1,63 +1,44 @@
-"""The publication bundle: verification.tex (a section of a few pages: one summary table and a few
-chosen figures whose captions say what is compared with what, at which resolution) and
-verification-supplement.tex (every variant, check and figure), the figures as PDF,
-provenance.json and reproduce.sh. Both .tex files are meant for \\input in a paper (graphicx);
-example.tex and example-supplement.tex wrap them into documents for a quick look."""
+"""The publication bundle (scripts/bundle.sh): verification.tex, the main part of a paper (at most
+four two-column pages: report_paper.py), verification-supplement.tex (every variant, check and
+figure, with the error definitions, provenance and references), the figures as PDF at print size,
+verification.bib, provenance.json, the source of the results' commit (source.tar.gz, `git
+archive`), the sweep.json files the figures and tables come from (results.tar.gz) and reproduce.sh,
+which rebuilds all of it from the folder alone. example.tex and example-supplement.tex wrap the two
+parts into documents; bundle.sh compiles them."""
+import datetime
+import hashlib
 import json
 import os
-import re
+import platform
 import shutil
-import unicodedata
+import subprocess
+import sys
+import tarfile
 from pathlib import Path
 
+import report_bib
 import report_kernels
-from report_data import (OUTCOMES, claim_notes, f2, file_of, fmt, is_dirty, num, provenances, row_note, slug,
+import report_paper
+from report_data import (claim_notes, f2, file_of, fmt, is_dirty, num, provenances, row_note, slug,
                          sweep_wide_failures, threads_text)
+from report_math import error_name, latex, prose
 
 FAIL = r"\textbf{FAIL}"
+# A list whose bullet is math's (cmsy, Type 1): LaTeX's \textbullet comes from the TS1 encoding,
+# which Computer Modern has as a bitmap (Type 3) font only, and journal preflight checks reject those.
+ITEMIZE = r"\begin{itemize}\small\renewcommand{\labelitemi}{$\bullet$}"
 FLOATS_PER_FLUSH = 8  # \clearpage after this many figure floats: LaTeX holds at most 18 unplaced floats
-MATH = {"±": r"\pm", "×": r"\times", "≤": r"\le", "≥": r"\ge", "−": "-", "≈": r"\approx", "∞": r"\infty",
-        "²": "^2", "³": "^3", "·": r"\cdot", "∫": r"\int", "∑": r"\sum", "√": r"\surd", "∇": r"\nabla", "∂": r"\partial"}
 
 
 def tex(text):
-    """Plain text to LaTeX: specials escaped, Greek letters and common symbols as math, anything
-    else outside ASCII spelled as its Unicode name (pdflatex would stop on it)."""
-    out = []
-    for ch in str(text):
-        if ch == "_":  # identifiers (drift_baseline_present) may break after an underscore
-            out.append(r"\_\allowbreak{}")
-        elif ch in "\\{}%&#$^~<>|":
-            out.append({"\\": r"\textbackslash{}", "^": r"\^{}", "~": r"\~{}", "<": r"$<$", ">": r"$>$",
-                        "|": r"$|$"}.get(ch, "\\" + ch))
-        elif ch in ",=":  # settings (euler=26,integrator=chapter) may break after a comma or an equals sign
-            out.append(ch + r"\allowbreak{}")
-        elif ord(ch) < 128:
-            out.append(ch)
-        elif ch in MATH:
-            out.append(f"${MATH[ch]}$")
-        elif ch in "–—":
-            out.append("--" if ch == "–" else "---")
-        else:
-            name = unicodedata.name(ch, "")
-            m = re.match(r"GREEK (SMALL|CAPITAL) LETTER (\w+)$", name)
-            if m:
-                letter = m.group(2).lower()
-                out.append(f"$\\{letter.capitalize() if m.group(1) == 'CAPITAL' else letter}$")
-            else:
-                out.append(f"[{name.lower() or '?'}]")
-    return "".join(out)
+    """Plain text with ASCII formulas as LaTeX (report_math)."""
+    return latex(text)
 
 
 def ragged(text):
     """A p{} table cell set ragged right (justified narrow cells stretch their spaces); its row must
     end in \\tabularnewline, since \\raggedright redefines \\\\."""
     return r"\raggedright " + text
-
-
-def wide_row(text):
-    """A row across the five columns of the section's table."""
-    return r"\multicolumn{5}{p{0.9\linewidth}}{" + ragged(text) + r"} \tabularnewline"
 
 
 def order_tex(row):
@@ -74,6 +55,7 @@ def expected_tex(row):
 
 # Each outcome in its own colour, as in the HTML report (xcolor).
 OUTCOME_TEX = {"verified": r"\textcolor[rgb]{0,0.4,0}{verified}", "known failure": r"\textcolor[rgb]{0.5,0.15,0.6}{known failure}",
+               "provisional": r"\textcolor[rgb]{0.63,0.31,0}{\emph{provisional}}",
                "no order claimed": r"\textcolor[rgb]{0.52,0.36,0}{no claim}", "fail": r"\textcolor[rgb]{0.7,0,0}{\textbf{fail}}"}
 
 
@@ -111,66 +93,26 @@ def copy_figure(case, stem, figs):
     return name
 
 
-def figure(files, caption, width):
-    body = r"\hfill".join(f"\\includegraphics[width={width}\\linewidth]{{figures/{f}}}" for f in files)
-    return [r"\begin{figure}[htbp]\centering", body, f"\\caption{{{caption}}}", r"\end{figure}"]
+def figure(files, caption, label=""):
+    """A float of one or two figures side by side, at the size they were drawn (print size)."""
+    body = r"\hfill".join(f"\\includegraphics{{figures/{f}}}" for f in files)
+    return [r"\begin{figure}[htbp]\centering", body, f"\\caption{{{caption}}}" + (f"\\label{{{label}}}" if label else ""),
+            r"\end{figure}"]
 
 
 def convergence_caption(case, s, row):
     defs = s.get("error_defs", {})
     lv = s["levels"]
-    return (f"{tex(case)} ({tex(s['variant'])}): {tex(row['error'])}"
+    return (f"{prose(case)} ({prose(s['variant'])}): {tex(row['error'])}"
             + (f", {tex(defs[row['error']])}" if row["error"] in defs else "")
             + f", against $n$ ({tex(s.get('n_counts', ''))}) at $n = {lv[0]}$ to ${lv[-1]}$ ({len(lv)} levels): "
             f"{tex(s.get('summary', ''))}. Observed order {order_tex(row)} (least-squares fit, solid), expected "
             f"{expected_tex(row)} (dashed, through the finest point; band shaded); {outcome_tex(row)}.")
 
 
-HYDRO = ("sod", "sedov", "noh", "sound_wave", "kh")  # the cases that verify the hydrodynamics: the section shows them first
-
-
 def run_caption(case, s, name):
     title = next((f["title"] for f in s["runs"][-1].get("figures", []) if f["name"] == name), name.replace("_", " "))
-    return f"{tex(case)} ({tex(s['variant'])}), finest run $n = {s['levels'][-1]}$: {tex(title)}."
-
-
-def hydro_figures(sweeps, made):
-    """Per hydrodynamics case present, its default variant's density profile at the finest level
-    (else its first profile, or kh's mode amplitude against time) and the convergence of its density error (else its first error with
-    an order claim), where drawn."""
-    pairs = []
-    for case in HYDRO:
-        if case not in sweeps:
-            continue
-        s = sweeps[case][0]
-        mine = [m for m in made if m[0] == case and m[1] is not None and m[1]["variant"] == s["variant"]]
-        runs = [m for m in mine if m[3] == "run"]
-        prof = next((m for m in runs if m[2] == "profile_rho"),
-                    next((m for m in runs if m[2].startswith("profile") or m[2] == "mode_amplitude"), None))
-        convs = [m for m in mine if m[3] == "convergence"]
-        conv = next((m for m in convs if "rho" in m[2]), convs[0] if convs else None)
-        pair = [m for m in (prof, conv) if m]
-        if pair:
-            pairs.append(pair)
-    return pairs
-
-
-def chosen(made, skip=()):
-    """The convergence figures for the section: verified errors (expected order at least 1/2) of
-    distinct cases (not in skip) with the widest range of n (then the most levels), at most four."""
-    cands = []
-    for case, s, err, kind, stem in made:
-        if kind != "convergence" or case in skip:
-            continue
-        row = next(r for r in s["rows"] if r["error"] == err)
-        if row["outcome"] == "verified" and len(s["levels"]) >= 3 and row["expected"] >= 0.5:  # a real convergence
-            cands.append((-(s["levels"][-1] / s["levels"][0]), -len(s["levels"]), case, s, row, stem))
-    picked, cases = [], set()
-    for *_, case, s, row, stem in sorted(cands, key=lambda c: c[:3]):
-        if case not in cases:
-            picked.append((case, s, row, stem))
-            cases.add(case)
-    return picked[:4]
+    return f"{prose(case)} ({prose(s['variant'])}), finest run $n = {s['levels'][-1]}$: {tex(title)}."
 
 
 def threads_tex(provs):
@@ -184,81 +126,16 @@ def threads_tex(provs):
 
 
 def provenance_text(sweeps, tier):
+    """The main part's one sentence of provenance (the supplement has the whole of it)."""
     provs = provenances(sweeps)
     p = provs[0] if provs else {}
     commits = sorted({str(q.get("git_commit")) for q in provs})
-    return (f"Every number in this section was produced by sphv at commit \\texttt{{{tex(', '.join(c[:12] for c in commits))}}}"
+    return (f"Every number in this section was produced by sphv at commit \\texttt{{{prose(', '.join(c[:12] for c in commits))}}}"
             + (" (mixed commits)" if len(commits) > 1 else "")
             + (r" \textbf{from a tree with uncommitted changes}" if any(is_dirty(q) for q in provs) else "")
-            + f", {tex(p.get('compiler', ''))} ({tex(p.get('build_type', ''))}, flags {tex(str(p.get('cxx_flags', '')).strip())}), "
-            f"on {tex(p.get('cpu', ''))} with {threads_tex(provs)}, instruction-set path "
-            f"{tex(str(p.get('isa_path', 'portable')))} (pair loops and tree walk), tier {tex(tier)}; "
-            r"\texttt{reproduce.sh} re-runs it. ")
-
-
-def main_section(sweeps, tier, made, figs):
-    rows, n_rows = [], {k: 0 for k in OUTCOMES}
-    for case, ss in sorted(sweeps.items()):
-        for s in ss:
-            for r in s["rows"]:
-                n_rows[r["outcome"]] = n_rows.get(r["outcome"], 0) + 1
-        s = ss[0]
-        shown = [r for r in s["rows"] if num(r.get("expected")) or r["outcome"] == "fail"]
-        if rows:
-            rows[-1] += r" \midrule"
-        block = rows
-        block.append(wide_row(r"\textbf{" + tex(case) + "}: " + tex(s.get("summary", ""))))
-        for r in shown:
-            block.append(f"\\quad {tex(r['error'])} & {sci(r.get('fine_value'))} ($n={s['levels'][-1]}$) & {order_tex(r)} & "
-                        f"{expected_tex(r)} & {outcome_tex(r)} \\\\")
-        notes = []
-        unclaimed = [r["error"] for r in s["rows"] if r not in shown]
-        if unclaimed:
-            notes.append(f"{len(unclaimed)} error{'s' if len(unclaimed) > 1 else ''} with no order claimed, bounds hold "
-                         f"({tex(', '.join(unclaimed[:3]))}{', ...' if len(unclaimed) > 3 else ''})")
-        if len(ss) > 1:
-            more = [r["outcome"] for v in ss[1:] for r in v["rows"]]
-            notes.append(f"{len(ss) - 1} further variant{'s' if len(ss) > 2 else ''}: {more.count('verified')} verified, "
-                         f"{more.count('known failure')} known failure{'s' if more.count('known failure') != 1 else ''}, "
-                         f"{more.count('no order claimed')} no claim, {more.count('fail')} fail")
-        if notes:
-            block.append(wide_row(r"\quad\emph{" + "; ".join(notes) + " (supplement)}"))
-    t = [r"% Generated by scripts/report.py --bundle (scripts/bundle.sh): \input{verification} in a paper (needs graphicx, booktabs, longtable, xcolor).",
-         r"\section{Verification}\label{sec:verification}",
-         provenance_text(sweeps, tier) +
-         r"Each case compares the SPH result with a reference independent of the code (quadrature, analytic solution, exact "
-         r"Riemann solver, SUNDIALS, direct summation). Each error is measured at several resolutions $n$; its observed order "
-         r"$p$ is minus the least-squares slope of $\log$ error against $\log n$, with the standard error of that fit. "
-         r"An error is \emph{verified} when $p$ lies within the expected order $\pm$ (band $+\,2$ standard errors), "
-         r"that standard error is at most the band, and the error is under its bound; \emph{no claim} means the error has "
-         r"no convergent limit, as the case states (a round-off quantity, an error at fixed $\theta$ or fixed $\Delta t$, an "
-         r"operator on a jittered set at fixed $h/\Delta x$, a degenerate input, or one level only) and its bounds hold; "
-         r"\emph{known failure} means the case states why the "
-         r"error misses its order and names the variant or setting that does converge; \emph{fail} means a check on "
-         f"that error failed. Over all {sum(len(ss) for ss in sweeps.values())} case variants: {n_rows['verified']} errors "
-         f"verified, {n_rows['known failure']} known failure{'s' if n_rows['known failure'] != 1 else ''}, "
-         f"{n_rows['no order claimed']} with no order claimed, {n_rows['fail']} failing. Table~\\ref{{tab:verification}} "
-         r"lists the default variant of each case; the supplement (\texttt{verification-supplement.tex}) holds every variant, "
-         r"every check (against the reference or, labelled \emph{drift}, against the code's own earlier output) and every figure.", ""]
-    t += long_table(r"case: compared against; error & at finest $n$ & observed order & expected & outcome",
-                    "l l l l l", rows, "Verification summary: each case (in bold, with what it is compared against) and the "
-                "errors of its default variant that carry an order claim or fail.", "tab:verification")
-    hydro = [m for pair in hydro_figures(sweeps, made) for m in pair]
-    for k in range(0, len(hydro), 2):  # two per float: readable at half the text width
-        pair = hydro[k:k + 2]
-        names = [copy_figure(case, stem, figs) for case, _, _, _, stem in pair]
-        caps = [f"({'ab'[j]}) " + (run_caption(case, s, name) if kind == "run" else
-                                  convergence_caption(case, s, next(r for r in s["rows"] if r["error"] == name)))
-                for j, (case, s, name, kind, _) in enumerate(pair)]
-        t += figure(names, ("Left to right: " if len(pair) > 1 else "") + " ".join(caps), 0.49 if len(pair) > 1 else 0.6)
-    # The other cases' widest convergence, in one float, only beside at most one float of the
-    # hydrodynamics: with the summary table of a full catalogue the section then stays within 4 pages.
-    picked = chosen(made, HYDRO)[:2] if len(hydro) <= 2 else []
-    if picked:
-        names = [copy_figure(case, stem, figs) for case, s, row, stem in picked]
-        caps = " ".join(f"({'ab'[j]}) {convergence_caption(case, s, row)}" for j, (case, s, row, _) in enumerate(picked))
-        t += figure(names, "Convergence" + (", left to right: " if len(picked) > 1 else ": ") + caps, 0.49 if len(picked) > 1 else 0.6)
-    return "\n".join(t) + "\n"
+            + f", built with {prose(p.get('compiler', ''))}, on {prose(p.get('cpu', ''))} with {threads_tex(provs)}, "
+            f"tier {prose(tier)}; \\texttt{{reproduce.sh}} in the bundle re-runs it from the source it carries "
+            r"(provenance and tool versions: supplement). ")
 
 
 def kernel_tables(case, ss):
@@ -272,104 +149,284 @@ def kernel_tables(case, ss):
             n_fixed, t_fixed, comp = report_kernels.comparison(members, err)
             for j, r in enumerate(comp):
                 head = (ragged(f"{tex(err)} ($n={fmt(n_fixed, 'g', '--')}$, {fmt(t_fixed, '.3g', '--')} s)") if j == 0 else "")
-                rows.append(f"{head} & {tex(r['kernel'])} & {sci(r['at_n'])} & {fmt(r['wall_at_n'], '.3g', '--')} & {sci(r['at_cost'])} & "
+                rows.append(f"{head} & {prose(r['kernel'])} & {sci(r['at_n'])} & {fmt(r['wall_at_n'], '.3g', '--')} & {sci(r['at_cost'])} & "
                             f"{order_tex(r)} & {outcome_tex(r)} \\tabularnewline")
             rows[-1] += r" \midrule" if err != report_kernels.errors(members)[-1] else ""
         t += long_table("error (fixed $n$, fixed cost) & kernel & at fixed $n$ & wall s & at fixed cost & observed & outcome",
                         r"p{2.6cm} l l l l l l", rows,
-                        f"{tex(case)} ({tex(label)}): the kernels compared. Fixed $n$: the finest level every kernel ran; fixed cost: "
+                        f"{prose(case)} ({prose(label)}): the kernels compared. Fixed $n$: the finest level every kernel ran; fixed cost: "
                         "each kernel's error interpolated (log error linear in log wall time) at the largest wall time every "
                         "kernel's sweep reached; observed order of each kernel's sweep.", f"tab:supp-kernels-{slug(case)}-{slug(label)}")
     return t
 
 
-def supplement(sweeps, made, figs):
-    t = [r"% Generated by scripts/report.py --bundle: \input{verification-supplement} (needs graphicx, booktabs, longtable, xcolor).",
-         r"\section{Verification supplement}\label{sec:verification-supplement}",
-         r"Every case variant behind the verification section: each error's outcome, every check (\emph{verification}: "
-         r"against an independent reference; \emph{drift}: against the code's own earlier output, which shows only that "
-         r"nothing changed) and every figure. Figures show the finest run unless they plot against $n$ or wall time.", ""]
-    for case, ss in sorted(sweeps.items()):
-        s0 = ss[0]
-        t += [f"\\subsection{{{tex(case)}}}", f"{tex(s0.get('summary', ''))}. $n$: {tex(s0.get('n_counts', ''))}."]
-        defs = {k: v for s in ss for k, v in s.get("error_defs", {}).items()}
-        if defs:
-            t += [r"\begin{itemize}\small"] + [f"\\item {tex(k)}: {tex(v)}" for k, v in defs.items()] + [r"\end{itemize}"]
-        notes = claim_notes(ss)
-        if notes:  # each claim's reason once; the table's rows give only their own
-            t += [r"Claims:", r"\begin{itemize}\small"] + [f"\\item {tex(claimed)}: {tex(why)}" for claimed, why in notes] + [r"\end{itemize}"]
-        rows = []
-        for s in ss:
-            for k, r in enumerate(s["rows"]):
-                rows.append(f"{ragged(tex(s['variant'])) if k == 0 else ''} & {ragged(tex(r['error']))} & {sci(r.get('fine_value'))} ($n={s['levels'][-1]}$) & "
-                            f"{order_tex(r)} & {expected_tex(r)} & {outcome_tex(r)} & {ragged(tex(row_note(s, r)))} \\tabularnewline")
-        if rows:
-            t += long_table("variant & error & at finest $n$ & observed & expected & outcome & own reason", r"p{2.0cm} p{2.2cm} l l l l p{3.0cm}",
-                            rows, f"{tex(case)}: every variant (the claims' reasons are listed above).", f"tab:supp-{slug(case)}")
-        checks = []
-        for s in ss:
-            for c in s["checks"]:
-                if c.get("kind") != "drift":
-                    checks.append(f"{ragged(tex(s['variant']))} & {tex(c['name'])} & {fmt(c.get('value'), '.4g', '--')} & "
-                                  f"[{fmt(c.get('lo'), '.4g', '--')}, {fmt(c.get('hi'), '.4g', '--')}] & "
-                                  f"{'pass' if c['pass'] else FAIL} \\tabularnewline")
-        if checks:
-            t += long_table("variant & verification check & value & allowed & ", r"p{3.2cm} l l l l", checks, f"{tex(case)}: verification checks.",
-                            f"tab:supp-checks-{slug(case)}")
-        t += kernel_tables(case, ss)
-        drift = [(s, c) for s in ss for c in s["checks"] if c.get("kind") == "drift"]
-        bad = [f"{s['variant']}: {c['name']}" for s, c in drift if not c["pass"]]
-        wide = [f"{s['variant']}: {n}" for s in ss for n in sweep_wide_failures(s)]
-        t.append(f"{len(drift)} drift checks (own earlier output, not verification), {len(bad)} failing"
-                 + (f": {tex('; '.join(bad))}" if bad else "") + "." + (f" Sweep-wide failures: {tex('; '.join(wide))}." if wide else ""))
-        gci = [(s["variant"], k, g) for s in ss for k, g in s.get("gci", {}).items()]
-        if gci:
-            t.append("Roache's GCI (finest pair, relative): " + "; ".join(
-                f"{tex(v)} {tex(k)} $= {fmt(g.get('fine_value'), '.6g', '--')}$ $\\pm$ {fmt(g.get('gci'), '.2e', '--')}" for v, k, g in gci) + ".")
-        t.append("")
-        mine = [m for m in made if m[0] == case]
-        pairs = [mine[k:k + 2] for k in range(0, len(mine), 2)]
-        for k, pair in enumerate(pairs):
-            names, caps = [], []
-            for j, (_, s, name, kind, stem) in enumerate(pair):
-                names.append(copy_figure(case, stem, figs))
-                side = ("left", "right")[j] if len(pair) == 2 else ""
-                if kind == "convergence":
-                    row = next(r for r in s["rows"] if r["error"] == name)
-                    cap = convergence_caption(case, s, row)
-                elif kind == "kernels":
-                    members = next(m for label, m in report_kernels.groups(ss) if label == name)
-                    cap = (f"{tex(case)} ({tex(name)}): kernels {tex(', '.join(k for k, _ in members))} compared, every error against "
-                           r"$n$ (top) and against the wall time of each run (bottom); dotted: the fixed resolution and the fixed cost "
-                           f"of Table~\\ref{{tab:supp-kernels-{slug(case)}-{slug(name)}}}.")
-                elif kind == "wall":
-                    d = next((v["error_defs"][name] for v in ss if name in v.get("error_defs", {})), "")
-                    cap = (f"{tex(case)}: {tex(name)}" + (f", {tex(d)}," if d else "") + " against the wall time of each run, one line per variant; "
-                           f"runs on {threads_text([r for v in ss for r in v['runs']])}.")
-                else:
-                    cap = run_caption(case, s, name)
-                caps.append((f"{side.capitalize()}: " if side else "") + cap)
-            t += figure(names, " ".join(caps), 0.49 if len(pair) == 2 else 0.6)
-            if (k + 1) % FLOATS_PER_FLUSH == 0:
+def figure_order(mine):
+    """A case's figures in the order a reader wants them: per variant its profiles and convergence,
+    then error against wall time, then the kernel comparisons."""
+    rank = {"run": 0, "convergence": 0, "wall": 1, "kernels": 2}
+    return sorted(mine, key=lambda m: rank.get(m[3], 3))  # stable: the variants keep their order
+
+
+def figure_caption(case, ss, m):
+    _, s, name, kind, _ = m
+    if kind == "convergence":
+        return convergence_caption(case, s, next(r for r in s["rows"] if r["error"] == name))
+    if kind == "kernels":
+        members = next(mem for label, mem in report_kernels.groups(ss) if label == name)
+        return (f"{prose(case)} ({prose(name)}): kernels {prose(', '.join(k for k, _ in members))} compared, every error against "
+                r"$n$ (top) and against the wall time of each run (bottom); dotted: the fixed resolution and the fixed cost "
+                f"of Table~\\ref{{tab:supp-kernels-{slug(case)}-{slug(name)}}}.")
+    if kind == "wall":
+        d = next((v["error_defs"][name] for v in ss if name in v.get("error_defs", {})), "")
+        return (f"{prose(case)}: {tex(name)}" + (f", {tex(d)}," if d else "") + " against the wall time of each run, one line per "
+                f"variant; runs on {threads_text([r for v in ss for r in v['runs']])}.")
+    return run_caption(case, s, name)
+
+
+def case_figures(case, ss, made, figs):
+    """The figure floats of a case: two column-wide figures side by side, a wider one alone."""
+    t, row = [], []
+    floats = 0
+
+    def flush():
+        nonlocal row, floats
+        if row:
+            names = [copy_figure(case, m[4], figs) for m in row]
+            side = ("Left: ", "Right: ") if len(row) == 2 else ("",)
+            t.extend(figure(names, " ".join(side[j] + figure_caption(case, ss, m) for j, m in enumerate(row))))
+            floats += 1
+            if floats % FLOATS_PER_FLUSH == 0:
                 t.append(r"\clearpage")
-        t.append(r"\clearpage")
+        row = []
+
+    for m in figure_order([m for m in made if m[0] == case]):
+        if m[3] == "kernels":
+            flush()
+            row = [m]
+            flush()
+        else:
+            row.append(m)
+            if len(row) == 2:
+                flush()
+    flush()
+    return t
+
+
+def checks_table(case, ss):
+    checks = []
+    for s in ss:
+        for c in s["checks"]:
+            if c.get("kind") != "drift":
+                checks.append(f"{ragged(prose(s['variant']))} & {ragged(prose(c['name']))} & {fmt(c.get('value'), '.4g', '--')} & "
+                              f"[{fmt(c.get('lo'), '.4g', '--')}, {fmt(c.get('hi'), '.4g', '--')}] & "
+                              f"{'pass' if c['pass'] else FAIL} & {ragged(tex(c.get('why', '')))} \\tabularnewline")
+    if not checks:
+        return []
+    return long_table("variant & verification check & value & allowed & & why", r"p{2.4cm} p{3.4cm} l l l p{4.6cm}", checks,
+                      f"{prose(case)}: verification checks (against a reference independent of the code).",
+                      f"tab:supp-checks-{slug(case)}")
+
+
+def case_section(case, ss, made, figs):
+    s0 = ss[0]
+    t = [f"\\subsection{{{prose(case)}}}\\label{{sec:supp-{slug(case)}}}",
+         f"{tex(s0.get('summary', ''))}. $n$: {tex(s0.get('n_counts', ''))}. "
+         f"Variants: {len(ss)}; levels of the default: ${', '.join(str(n) for n in s0['levels'])}$."]
+    defs = {k: v for s in ss for k, v in s.get("error_defs", {}).items()}
+    if defs:
+        t += [r"\paragraph{Errors}", ITEMIZE] + [f"\\item {error_name(k)}: {tex(v)}" for k, v in defs.items()] + [r"\end{itemize}"]
+    notes = claim_notes(ss)
+    if notes:  # each claim's reason once; the table's rows give only their own
+        t += [r"\paragraph{Claims}", ITEMIZE] + [f"\\item {tex(claimed)}: {tex(why)}" for claimed, why in notes] + [r"\end{itemize}"]
+    rows = []
+    for s in ss:
+        for k, r in enumerate(s["rows"]):
+            rows.append(f"{ragged(prose(s['variant'])) if k == 0 else ''} & {ragged(tex(r['error']))} & {sci(r.get('fine_value'))} ($n={s['levels'][-1]}$) & "
+                        f"{order_tex(r)} & {expected_tex(r)} & {outcome_tex(r)} & {ragged(tex(row_note(s, r)))} \\tabularnewline")
+    if rows:
+        t += long_table("variant & error & at finest $n$ & observed & expected & outcome & own reason", r"p{2.0cm} p{2.3cm} l l l l p{3.4cm}",
+                        rows, f"{prose(case)}: every variant (the claims' reasons are listed above).", f"tab:supp-{slug(case)}")
+    else:
+        t.append(r"No error carries an order: this case is judged by its checks alone (Table~"
+                 f"\\ref{{tab:supp-checks-{slug(case)}}}).")
+    t += checks_table(case, ss)
+    t += kernel_tables(case, ss)
+    drift = [(s, c) for s in ss for c in s["checks"] if c.get("kind") == "drift"]
+    bad = [f"{s['variant']}: {c['name']}" for s, c in drift if not c["pass"]]
+    wide = [f"{s['variant']}: {n}" for s in ss for n in sweep_wide_failures(s)]
+    t.append(f"{len(drift)} drift checks (own earlier output, not verification), {len(bad)} failing"
+             + (f": {prose('; '.join(bad))}" if bad else "") + "." + (f" Sweep-wide failures: {prose('; '.join(wide))}." if wide else ""))
+    gci = [(s["variant"], k, g) for s in ss for k, g in s.get("gci", {}).items()]
+    if gci:
+        t.append(r"Roache's GCI \citep{roache1994} (finest pair, relative): " + "; ".join(
+            f"{prose(v)} {tex(k)} $= {fmt(g.get('fine_value'), '.6g', '--')} \\pm {fmt(g.get('gci'), '.2e', '--')}$" for v, k, g in gci) + ".")
+    t.append("")
+    t += case_figures(case, ss, made, figs)
+    t.append(r"\clearpage")
+    return t
+
+
+def provenance_section(prov):
+    """The supplement's provenance: what produced the numbers, what made the bundle, and when."""
+    rows = [("commit", prose(", ".join(prov["git_commits"]))),
+            ("source tree", "clean (no run records uncommitted changes)" if not prov["dirty_runs"] else
+             f"\\textbf{{uncommitted changes}} in {prov['dirty_runs']} of {prov['points']} runs"),
+            ("source archive", f"\\texttt{{source.tar.gz}} (\\texttt{{git archive}}), SHA-256 \\texttt{{{prov['source_sha256'][:16]}}}\\dots"
+             if prov.get("source_sha256") else "none (the commit is not in the repository that made the bundle)"),
+            ("tier", prose(prov["tier"])), ("points", f"{prov['points']}, summed wall time {prov['points_wall_time_s']:.0f} s"),
+            ("points ran", prose(" to ".join(prov["points_ran"])) if prov["points_ran"] else "not recorded"),
+            ("threads per point", prose(", ".join(map(str, prov["threads_per_point"])) or "not recorded")),
+            ("compiler", prose(prov.get("compiler", ""))), ("build type, flags", prose(f"{prov.get('build_type', '')}, {prov.get('cxx_flags', '')}")),
+            ("instruction-set path", prose(str(prov.get("isa_path", "")))), ("CPU", prose(f"{prov.get('cpu', '')} ({prov.get('cores', '?')} cores)")),
+            ("host", prose(prov.get("uname", ""))), ("bundle made", prose(prov["bundle_time"]))]
+    rows += [(prose(k), prose(v)) for k, v in prov["tools"].items()]
+    body = [f"{k} & {ragged(v)} \\tabularnewline" for k, v in rows]
+    return ([r"\subsection{Provenance}\label{sec:supp-provenance}",
+             r"What produced the numbers (each point's \texttt{result.json} records it) and what made this bundle. Library and "
+             r"tool versions are those of the Debian packages installed where the bundle was made; the compiler is the one "
+             r"the points record. \texttt{reproduce.sh} rebuilds everything from \texttt{source.tar.gz}."]
+            + long_table("item & value", r"p{3.6cm} p{12cm}", body, "Provenance of the results and of the bundle.", "tab:supp-provenance"))
+
+
+def supplement(sweeps, made, figs, prov):
+    t = [r"% Generated by scripts/report.py --bundle: \input{verification-supplement} (needs graphicx, booktabs, longtable,",
+         r"% xcolor, natbib). Figures are drawn at print size (84 mm wide, two side by side) and included unscaled.",
+         r"\begingroup\setlength{\emergencystretch}{2em}% long names and formulas: stretch a line rather than overfill it",
+         r"\section{Verification supplement}\label{sec:verification-supplement}",
+         r"Every case variant behind the verification section: each error's definition and outcome, every check "
+         r"(\emph{verification}: against an independent reference; \emph{drift}: against the code's own earlier output, "
+         r"which shows only that nothing changed) and every figure, a case's profiles and convergence first, then its "
+         r"error against wall time. Figures show the finest run unless they plot against $n$ or wall time. The observed "
+         r"order $p$ of an error $E$ measured at levels $n_1 < \dots < n_k$ is the least-squares slope of $-\ln E$ "
+         r"against $\ln n$, given with the standard error of that slope.", ""]
+    t += provenance_section(prov) + [r"\clearpage"]
+    for case, ss in sorted(sweeps.items()):
+        t += case_section(case, ss, made, figs)
+    t.append(r"\endgroup")
     return "\n".join(t) + "\n"
 
 
-def write_bundle(bundle, sweeps, tier, made, report_dir):
+EXAMPLE = r"""% A two-column page of a journal (174 mm text, 84 mm columns: MNRAS's) with the main part in it.
+\documentclass[10pt,twocolumn]{article}
+\usepackage[a4paper,textwidth=174mm,columnsep=6mm,top=20mm,bottom=22mm]{geometry}
+\usepackage{graphicx,booktabs,xcolor}
+\usepackage[round]{natbib}
+\begin{document}
+\input{verification}
+\input{verification-references}
+\end{document}
+"""
+EXAMPLE_SUPPLEMENT = r"""% The supplement as a document of its own: contents, the supplement, references.
+\documentclass[10pt]{article}
+\usepackage[a4paper,textwidth=174mm,top=20mm,bottom=22mm]{geometry}
+\usepackage{graphicx,booktabs,longtable,xcolor}
+\usepackage[round]{natbib}
+\usepackage[hidelinks]{hyperref}
+\title{sphv: verification supplement}
+\date{}
+\begin{document}
+\maketitle
+\tableofcontents
+\clearpage
+\input{verification-supplement}
+\clearpage\addcontentsline{toc}{section}{References}
+\input{verification-supplement-references}
+\end{document}
+"""
+
+
+def write_bundle(bundle, sweeps, tier, made, results, source_repo, with_runs):
     bundle = Path(bundle)
     figs = bundle / "figures"
     shutil.rmtree(figs, ignore_errors=True)
     figs.mkdir(parents=True, exist_ok=True)
-    (bundle / "verification.tex").write_text(main_section(sweeps, tier, made, figs))
-    (bundle / "verification-supplement.tex").write_text(supplement(sweeps, made, figs))
-    for name, part in (("example.tex", "verification"), ("example-supplement.tex", "verification-supplement")):
-        (bundle / name).write_text("\\documentclass{article}\n\\usepackage{graphicx,booktabs,longtable,xcolor}\n\\usepackage[margin=2.5cm]{geometry}\n"
-                                   f"\\begin{{document}}\n\\input{{{part}}}\n\\end{{document}}\n")
-    (bundle / "provenance.json").write_text(json.dumps(bundle_provenance(sweeps, tier), indent=1) + "\n")
     commits = sorted({str(p.get("git_commit")) for p in provenances(sweeps)})
-    (bundle / "reproduce.sh").write_text(reproduce_script(commits, tier))
+    prov = bundle_provenance(sweeps, tier)
+    prov["source_sha256"] = source_archive(bundle / "source.tar.gz", source_repo, commits)
+    prov["tools"] = tool_versions()
+    figdir = bundle / "paper-figures"
+    (bundle / "verification.tex").write_text(
+        report_paper.section(sweeps, figdir, lambda stem: copy_figure("paper", stem, figs), provenance_text(sweeps, tier)))
+    shutil.rmtree(figdir, ignore_errors=True)  # drawn for the bundle only: copied into figures/
+    (bundle / "verification-supplement.tex").write_text(supplement(sweeps, made, figs, prov))
+    (bundle / "verification.bib").write_text(report_bib.bibtex())
+    (bundle / "verification-references.tex").write_text(
+        report_bib.thebibliography(report_bib.cited((bundle / "verification.tex").read_text())))
+    (bundle / "verification-supplement-references.tex").write_text(report_bib.thebibliography())
+    (bundle / "example.tex").write_text(EXAMPLE)
+    (bundle / "example-supplement.tex").write_text(EXAMPLE_SUPPLEMENT)
+    results_archive(bundle / "results.tar.gz", results, sweeps)
+    runs = bundle / "runs.tar.xz"
+    runs.unlink(missing_ok=True)
+    if with_runs:  # every point's files (particles, logs): large, so only on request
+        with tarfile.open(runs, "w:xz", preset=6) as tar:
+            tar.add(results, arcname="runs")
+    (bundle / "provenance.json").write_text(json.dumps(prov, indent=1) + "\n")
+    script = bundle / "reproduce.sh"
+    script.write_text(reproduce_script(commits, tier, prov["source_sha256"], with_runs))
+    script.chmod(0o755)
     print(f"bundle: {bundle / 'verification.tex'} and verification-supplement.tex, {len(list(figs.glob('*.pdf')))} figures")
+
+
+def source_archive(dst, source, commits):
+    """source.tar.gz: `git archive` of the one commit the results came from, from the repository
+    source, or source itself when it is such an archive (a rebuild from one: its commit must be the
+    results'); its SHA-256, or None (and no archive) when the results name no single commit there."""
+    if Path(source).is_file():
+        archived = subprocess.run(f"gzip -dc '{source}' | git get-tar-commit-id", shell=True, capture_output=True,
+                                  text=True).stdout.strip()
+        if len(commits) != 1 or archived != commits[0]:
+            print(f"bundle: warning: no source archive: {source} holds commit '{archived}', the results {', '.join(commits)}",
+                  file=sys.stderr)
+            return None
+        if Path(source).resolve() != dst.resolve():
+            shutil.copy(source, dst)
+        return hashlib.sha256(dst.read_bytes()).hexdigest()
+    dst.unlink(missing_ok=True)
+    if len(commits) != 1:
+        return None
+    try:
+        subprocess.run(["git", "-C", str(source), "archive", "--format=tar.gz", "-o", str(dst.resolve()), f"{commits[0]}^{{commit}}"],
+                       check=True, capture_output=True)
+    except (OSError, subprocess.CalledProcessError) as e:
+        print(f"bundle: warning: no source archive: commit {commits[0]} is not in {source} "
+              f"({(getattr(e, 'stderr', b'') or b'').decode().strip() or e})", file=sys.stderr)
+        dst.unlink(missing_ok=True)
+        return None
+    return hashlib.sha256(dst.read_bytes()).hexdigest()
+
+
+def results_archive(dst, results, sweeps):
+    """results.tar.gz: summary.json and every sweep.json (each point's errors, checks and the data
+    of its figures): what the tables and figures are made from, without the particle files."""
+    results = Path(results)
+    with tarfile.open(dst, "w:gz", compresslevel=9) as tar:
+        for f in [results / "summary.json"] + [results / s["_dir"] / "sweep.json" for ss in sweeps.values() for s in ss]:
+            if f.is_file():
+                tar.add(f, arcname=str(Path("results") / f.relative_to(results)))
+
+
+def tool_versions():
+    """The versions of the tools and libraries where the bundle is made (Debian packages, Python,
+    matplotlib, pdflatex); a tool that is absent says so."""
+    out = {}
+    for pkg in ("g++", "cmake", "libeigen3-dev", "libsundials-dev", "libgsl-dev", "libhdf5-dev", "nlohmann-json3-dev",
+                "libopenmpi-dev", "catch2", "python3-matplotlib", "python3-numpy", "texlive-binaries", "texlive-latex-base"):
+        try:
+            v = subprocess.run(["dpkg-query", "-W", "-f=${Version}", pkg], capture_output=True, text=True).stdout.strip()
+        except OSError:
+            v = ""
+        out[pkg] = v or "not installed (or not a Debian system)"
+    import matplotlib
+    import numpy
+    out["Python"] = platform.python_version()
+    out["matplotlib (imported)"] = matplotlib.__version__
+    out["numpy (imported)"] = numpy.__version__
+    try:
+        out["pdflatex"] = subprocess.run(["pdflatex", "--version"], capture_output=True, text=True).stdout.splitlines()[0]
+    except (OSError, IndexError):
+        out["pdflatex"] = "not found"
+    return out
 
 
 def bundle_provenance(sweeps, tier):
@@ -387,18 +444,47 @@ def bundle_provenance(sweeps, tier):
     dates = sorted(str(p["date"]) for p in provs if "date" in p)
     prov["points_ran"] = [dates[0], dates[-1]] if dates else []
     prov["points_wall_time_s"] = sum(r["wall_time_s"] for ss in sweeps.values() for s in ss for r in s["runs"] if num(r.get("wall_time_s")))
+    prov["bundle_time"] = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%dT%H:%M:%SZ")
     return prov
 
 
-def reproduce_script(commits, tier):
-    """reproduce.sh: re-runs the bundle from a checkout of the one commit its results came from
-    (git_commit is the full hash; an abbreviated one from older results resolves as well)."""
-    if len(commits) != 1 or commits[0] in ("unknown", "None"):
-        return ("#!/usr/bin/env bash\n# The results behind this bundle do not name one commit: nothing to check out.\n"
-                f"echo 'reproduce.sh: error: the results come from commits {', '.join(commits)}, not one; rerun them at one commit' >&2\nexit 2\n")
+def reproduce_script(commits, tier, sha256, with_runs):
+    """reproduce.sh: from the bundle folder wherever it lies, checks source.tar.gz against the
+    commit and hash the results recorded, unpacks it, builds sphv, reruns the tier and rewrites
+    the bundle into reproduced/ beside it."""
+    if len(commits) != 1 or commits[0] in ("unknown", "None", "") or not sha256:
+        why = (f"the results come from commits {', '.join(commits)}, not one" if len(commits) != 1 else
+               f"the results record commit '{commits[0]}', which the bundle's maker could not archive")
+        return ("#!/usr/bin/env bash\n# The bundle carries no source archive of one commit: nothing to rebuild from.\n"
+                f"echo 'reproduce.sh: error: {why}; rerun them at one commit and bundle again' >&2\nexit 2\n")
     c = commits[0]
-    return ("#!/usr/bin/env bash\n# Re-runs every number behind this bundle and rewrites it, in a checkout of the repository at "
-            f"commit {c}.\nset -e\ncd \"$(git rev-parse --show-toplevel)\"\n"
-            f"[ \"$(git rev-parse HEAD)\" = \"$(git rev-parse --verify -q '{c}^{{commit}}')\" ] || "
-            f"{{ echo \"reproduce.sh: error: HEAD is $(git rev-parse HEAD); check out commit {c} first\" >&2; exit 2; }}\n"
-            f"bash scripts/bundle.sh --tier {tier.split(',')[0]} --out bundle\n")
+    return f"""#!/usr/bin/env bash
+# Re-runs every number behind this bundle from the source it carries and rewrites the bundle into
+# reproduced/ in this folder. Works from a copy of the folder anywhere; needs git (to read the
+# archive's commit), the Debian packages of scripts/install-deps.sh (--tex to compile the PDFs).
+#   ./reproduce.sh          the tier the bundle was made from ({tier.split(',')[0]})
+#   ./reproduce.sh quick    another tier
+set -euo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
+commit={c}
+sha256={sha256}
+tier=${{1:-{tier.split(',')[0]}}}
+die() {{ echo "reproduce.sh: error: $*" >&2; exit 2; }}
+[ -f "$here/source.tar.gz" ] || die "no source.tar.gz beside reproduce.sh"
+got=$(sha256sum "$here/source.tar.gz" | cut -d' ' -f1)
+[ -n "$got" ] && [ "$got" = "$sha256" ] || die "source.tar.gz has SHA-256 '$got', the bundle recorded $sha256"
+# git reads the header only: gzip, cut short, must not fail the pipe
+archived=$( (gzip -dc "$here/source.tar.gz" 2>/dev/null || true) | git get-tar-commit-id) || die "cannot read the commit of source.tar.gz (git get-tar-commit-id)"
+[ -n "$archived" ] && [ "$archived" = "$commit" ] || die "source.tar.gz holds commit '$archived', the results came from $commit"
+src=$here/source
+rm -rf "$src" && mkdir -p "$src" && tar -xzf "$here/source.tar.gz" -C "$src"
+cd "$src"
+# Not a git checkout: the build records the archive's commit, checked above (verification/build_state.cmake);
+# a repository around this folder (a copy inside a checkout) is not looked for.
+export SPHV_ARCHIVE_COMMIT=$commit GIT_CEILING_DIRECTORIES=$here
+bash scripts/build.sh sphv
+rm -rf "$here/runs"
+./build/sphv verify --tier "$tier" --out "$here/runs" || echo "reproduce.sh: a gate failed (exit $?): the bundle shows it"
+bash scripts/bundle.sh --results "$here/runs" --out "$here/reproduced" --source-archive "$here/source.tar.gz"{' --with-runs' if with_runs else ''}
+echo "reproduce.sh: rebuilt from commit $commit, tier $tier: $here/reproduced"
+"""

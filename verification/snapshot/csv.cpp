@@ -9,8 +9,8 @@
 #include <optional>
 #include <string_view>
 
-#include "verification/params.hpp"
-#include "verification/result.hpp"
+#include "verification/harness/params.hpp"
+#include "verification/harness/result.hpp"
 #include "verification/snapshot/snapshot.hpp"
 
 namespace sphv {

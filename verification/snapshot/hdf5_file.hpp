@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "verification/params.hpp"
+#include "verification/harness/params.hpp"
 
 namespace sphv::h5 {
 

@@ -11,7 +11,7 @@
 #include <cstring>
 #include <string>
 
-#include "verification/params.hpp"
+#include "verification/harness/params.hpp"
 #include "verification/snapshot/snapshot.hpp"
 
 namespace sphv {

@@ -8,7 +8,7 @@
 #include <cstdio>
 #include <fstream>
 
-#include "verification/params.hpp"
+#include "verification/harness/params.hpp"
 
 namespace sphv {
 

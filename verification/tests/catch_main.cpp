@@ -1,10 +1,10 @@
 // Catch2's main, compiled once and linked into both test executables (sphv_tests and the
-// sanitizer tests), with sphv's allocator setting (verification/allocator.hpp). Tests queued by
+// sanitizer tests), with sphv's allocator setting (verification/support/allocator.hpp). Tests queued by
 // sphv::tests::Deferred (deferred.hpp) register here, before Catch2 lists or runs any.
 #define CATCH_CONFIG_RUNNER
 #include <catch2/catch.hpp>
 
-#include "verification/allocator.hpp"
+#include "verification/support/allocator.hpp"
 #include "verification/tests/deferred.hpp"
 
 namespace sphv::tests {

@@ -9,7 +9,7 @@
 #include "reference/direct_sum.hpp"
 #include "reference/evrard_lagrangian.hpp"
 #include "sph/gravity/self_gravity.hpp"
-#include "verification/sweep.hpp"
+#include "verification/harness/sweep.hpp"
 
 TEST_CASE("self-gravity scene term against the direct sum", "[evrard][gravity]") {
   // 1000 random particles in the unit sphere, theta 0.5: the Phantom test-suite set-up

@@ -4,10 +4,15 @@
 # With --ic FILE it first reads its initial conditions, as SWIFT reads the file its parameter
 # file names (any format sphv reads: `sphv ic`'s csv, swift or h5part), and refuses a file
 # without the gas state a code starts from (x, vx, m, rho, u, h at time 0).
+# EXTERNAL_CODE_FAULT=half_order makes it a code with a fault a gate must catch: it runs at the
+# resolution 10 sqrt(N) when asked for N, so its errors fall at half their order.
 # usage: external_code.sh SPHV CASE N OUT FORMAT [--ic FILE] [key=value ...]   (FORMAT: csv, swift, h5part)
 set -euo pipefail
 sphv=$1 case=$2 n=$3 out=$4 format=$5
 shift 5
+if [ "${EXTERNAL_CODE_FAULT:-}" = half_order ]; then
+  n=$(python3 -c 'import math, sys; print(round(10 * math.sqrt(int(sys.argv[1]))))' "$n")
+fi
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 if [ "${1:-}" = "--ic" ]; then

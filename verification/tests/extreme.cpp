@@ -8,8 +8,8 @@
 
 #include "reference/noh.hpp"
 #include "reference/sedov.hpp"
-#include "verification/cases/sedov_errors.hpp"
-#include "verification/sweep.hpp"
+#include "verification/cases/sedov/errors.hpp"
+#include "verification/harness/sweep.hpp"
 
 namespace {
 // One thread (see gates.cpp): results do not depend on the thread count.
@@ -104,8 +104,10 @@ TEST_CASE("noh reference: published post-shock states", "[reference][noh]") {
 }
 
 TEST_CASE("sedov: the harness gates the density L1 and shock-radius orders (2D, n = 32, 64)", "[extreme][sedov]") {
-  // Two levels, so the harness adds the order checks of the claims (~30 s). Measured L1 order 0.45
-  // (pre-asymptotic), inside 1 +- 0.75; shock radius order 0.67, inside 1 +- 0.8.
+  // Two levels, so the harness adds the order checks of the claims (~30 s). L1 order 0.45
+  // (pre-asymptotic) and shock radius 0.67 lie only in the former windows, 1 +- (0.75 or 0.8):
+  // the acceptance rule rejects those bands (at most 0.3), so both rows read provisional, never
+  // verified, until the claims are settled.
   const auto s = sweep_one_thread(sphv::find_case("sedov"), {32, 64}, {});
   REQUIRE(s.observed_order.count("L1_rho") == 1);
   for (const auto& ch : s.checks) {
@@ -114,5 +116,9 @@ TEST_CASE("sedov: the harness gates the density L1 and shock-radius orders (2D, 
   }
   CHECK(std::any_of(s.checks.begin(), s.checks.end(), [](const sphv::Check& c) { return c.name == "order_L1_rho"; }));
   CHECK(std::any_of(s.checks.begin(), s.checks.end(), [](const sphv::Check& c) { return c.name == "order_shock_radius"; }));
-  for (const auto& r : s.rows) CHECK(r.outcome == "verified");
+  for (const auto& r : s.rows) {
+    INFO(r.error << ": " << r.why);
+    CHECK(r.outcome == "provisional");
+    CHECK(r.why.find("window_" + r.error) != std::string::npos);
+  }
 }

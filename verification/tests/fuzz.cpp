@@ -17,7 +17,7 @@
 #include <iterator>
 #include <thread>
 
-#include "verification/case.hpp"
+#include "verification/harness/case.hpp"
 #include "verification/tests/fuzz_inputs.hpp"
 
 extern char** environ;

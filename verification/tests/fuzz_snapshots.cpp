@@ -18,9 +18,9 @@
 #include <fstream>
 #include <iterator>
 
-#include "verification/gravity_input.hpp"
-#include "verification/params.hpp"
-#include "verification/score.hpp"
+#include "verification/io/gravity_input.hpp"
+#include "verification/harness/params.hpp"
+#include "verification/commands/score.hpp"
 #include "verification/snapshot/snapshot.hpp"
 #include "verification/tests/fuzz_inputs.hpp"
 

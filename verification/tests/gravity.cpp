@@ -11,9 +11,9 @@
 #include "sph/search/grid_search.hpp"
 #include "sph/search/tree.hpp"
 #include "sph/search/tree_search.hpp"
-#include "verification/cases/gravity_compare.hpp"
-#include "verification/cases/gravity_models.hpp"
-#include "verification/sweep.hpp"
+#include "verification/cases/gravity/compare.hpp"
+#include "verification/cases/gravity/models.hpp"
+#include "verification/harness/sweep.hpp"
 #include "verification/tests/isa_path.hpp"
 
 using namespace sphv::gravity;

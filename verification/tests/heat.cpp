@@ -9,7 +9,7 @@
 #include "sph/density/summation.hpp"
 #include "sph/density/variable_h.hpp"
 #include "sph/search/grid_search.hpp"
-#include "verification/sweep.hpp"
+#include "verification/harness/sweep.hpp"
 
 TEST_CASE("heat: bad input is refused", "[heat][input]") {
   const auto& c = sphv::find_case("heat");

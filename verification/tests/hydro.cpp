@@ -16,7 +16,7 @@
 #include "sph/hydro/eos.hpp"
 #include "sph/hydro/euler.hpp"
 #include "sph/hydro/evolve.hpp"
-#include "verification/sweep.hpp"
+#include "verification/harness/sweep.hpp"
 #include "verification/tests/isa_path.hpp"
 
 namespace {

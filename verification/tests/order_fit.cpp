@@ -1,4 +1,4 @@
-// The observed order's fit and the grid convergence index (verification/sweep.cpp) against known
+// The observed order's fit and the grid convergence index (verification/harness/sweep.cpp) against known
 // answers: data built with a known slope and known residuals, whose least-squares slope and
 // standard error follow in closed form (the standard error sets the width of every order band the
 // report shows), and a functional with a known limit, whose GCI follows in closed form.
@@ -7,7 +7,7 @@
 #include <cmath>
 #include <vector>
 
-#include "verification/sweep.hpp"
+#include "verification/harness/sweep.hpp"
 
 namespace {
 

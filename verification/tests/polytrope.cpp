@@ -1,7 +1,7 @@
 // The n = 1 polytrope (reference/polytrope) against its defining equations, checked numerically:
 // the Lane-Emden equation of index 1, hydrostatic equilibrium with the mass from a quadrature of
 // the density, the total mass 4 rho_c R^3 / pi and the inverse of the cumulative mass; and the
-// case's set-up (verification/cases/polytrope_setup.hpp) built on it.
+// case's set-up (verification/cases/polytrope/setup.hpp) built on it.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -10,7 +10,7 @@
 #include <stdexcept>
 
 #include "reference/polytrope.hpp"
-#include "verification/cases/polytrope_setup.hpp"
+#include "verification/cases/polytrope/setup.hpp"
 
 namespace {
 

@@ -13,7 +13,7 @@
 #include <limits>
 #include <numbers>
 
-#include "verification/case.hpp"
+#include "verification/harness/case.hpp"
 
 namespace {
 constexpr double not_a_number = std::numeric_limits<double>::quiet_NaN();

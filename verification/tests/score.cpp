@@ -14,10 +14,10 @@
 #include "reference/riemann.hpp"
 #include "reference/sound_wave.hpp"
 #include "sph/gravity/tree_gravity.hpp"
-#include "verification/cases/gravity_compare.hpp"
-#include "verification/cases/gravity_models.hpp"
-#include "verification/ic.hpp"
-#include "verification/score.hpp"
+#include "verification/cases/gravity/compare.hpp"
+#include "verification/cases/gravity/models.hpp"
+#include "verification/commands/ic.hpp"
+#include "verification/commands/score.hpp"
 #include "verification/snapshot/snapshot.hpp"
 
 namespace fs = std::filesystem;

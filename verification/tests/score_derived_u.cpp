@@ -8,7 +8,7 @@
 #include <string>
 
 #include "reference/riemann.hpp"
-#include "verification/score.hpp"
+#include "verification/commands/score.hpp"
 #include "verification/snapshot/snapshot.hpp"
 
 using namespace sphv;
@@ -47,7 +47,7 @@ void require_zero_errors(const std::string& thermal) {
     reference::GasState l, r;
     double t;
   };
-  // The presets' states and end times (verification/cases/sod.cpp: Toro's tests 1 and 2).
+  // The presets' states and end times (verification/cases/shock_tubes/sod.cpp: Toro's tests 1 and 2).
   const Tube tubes[] = {{"sod", {1.0, 0.0, 1.0}, {0.125, 0.0, 0.1}, 0.25}, {"toro2", {1.0, -2.0, 0.4}, {1.0, 2.0, 0.4}, 0.15}};
   for (const auto& tube : tubes) {
     for (const double gamma : {1.4, 1.6}) {  // their settings text reads back as the same double

@@ -1,5 +1,5 @@
-// The Sedov shock radius against the kernel-smoothed exact front (sedov_smoothed.hpp,
-// sedov_errors.hpp): the smoothing checked against a brute-force convolution, the half-rise bias
+// The Sedov shock radius against the kernel-smoothed exact front (sedov/smoothed.hpp,
+// sedov/errors.hpp): the smoothing checked against a brute-force convolution, the half-rise bias
 // it predicts, and the error on synthetic particles that carry the SPH estimate of the exact field.
 #include <catch2/catch.hpp>
 
@@ -10,8 +10,8 @@
 
 #include "reference/sedov.hpp"
 #include "sph/kernel/kernels.hpp"
-#include "verification/cases/sedov_errors.hpp"
-#include "verification/cases/sedov_smoothed.hpp"
+#include "verification/cases/sedov/errors.hpp"
+#include "verification/cases/sedov/smoothed.hpp"
 
 namespace {
 

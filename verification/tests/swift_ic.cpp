@@ -10,8 +10,8 @@
 #include <filesystem>
 #include <set>
 
-#include "verification/cases/sod_errors.hpp"
-#include "verification/ic.hpp"
+#include "verification/cases/shock_tubes/errors.hpp"
+#include "verification/commands/ic.hpp"
 
 namespace fs = std::filesystem;
 using namespace sphv;

@@ -1,0 +1,11 @@
+#pragma once
+// gresho and other codes' files: the scorer of `sphv score` and the initial conditions of `sphv ic`.
+#include "verification/snapshot/initial_state.hpp"
+#include "verification/snapshot/scorer.hpp"
+
+namespace sphv::gresho {
+
+Scorer scorer();
+InitialState initial_conditions(const Params& p, IcLayout layout);
+
+}  // namespace sphv::gresho

@@ -1,0 +1,11 @@
+#pragma once
+// polytrope and other codes' files: the scorer of `sphv score` and the initial conditions of `sphv ic`.
+#include "verification/snapshot/initial_state.hpp"
+#include "verification/snapshot/scorer.hpp"
+
+namespace sphv::polytrope {
+
+Scorer scorer();
+InitialState initial_conditions(const Params& p, IcLayout layout);
+
+}  // namespace sphv::polytrope

@@ -1,0 +1,218 @@
+// Case `sedov`: the Sedov-Taylor point blast in 2D and 3D. Energy E = 1 is put, as heat, into the
+// particles within r_blast R of the centre of a uniform, nearly cold gas (rho0 = 1) in a periodic
+// box; at t_end the shock should sit at R = xi_0 (E t^2 / rho0)^(1/(d+2)) = 0.3 (box half-width
+// 0.5). Independent reference: reference/sedov (similarity ODEs integrated by GSL, xi_0 from the
+// energy integral, checked against the published table in tests/extreme.cpp).
+//
+// Blast radius: a fixed fraction of R (r_blast = 1/4), not the initial h. Deposited over one
+// kernel of the initial h, the blast would sit on the same ~20 particles at every resolution;
+// their volume cannot represent the hot, nearly empty centre, they keep a resolution-independent
+// excess of the energy as heat, the profile lags the similarity solution by a few per cent of R
+// at every n and the density L1 does not converge. On R/4 (the same particles at n = 32) the
+// deposit holds more particles at each finer level, and the lag and the missing kinetic energy
+// fall with n (docs/cases/sedov.md). The blast's finite size is remembered at t_end; at these
+// levels it is below the shock's smearing (the sweep's order says so).
+#include <cmath>
+#include <string>
+
+#include "reference/sedov.hpp"
+#include "sph/kernel/kernels.hpp"
+#include "verification/harness/case.hpp"
+#include "verification/cases/common/extreme_hydro.hpp"
+#include "verification/cases/common/centre_param.hpp"
+#include "verification/cases/common/radial_result.hpp"
+#include "verification/cases/sedov/errors.hpp"
+#include "verification/cases/sedov/snapshots.hpp"
+#include "verification/cases/sedov/setup.hpp"
+#include "verification/harness/sweep.hpp"
+
+namespace sphv::sedov_case {
+namespace {
+
+using sedov::R_target;
+
+template <int D>
+Result run_dim(const Params& prm) {
+  const int n = static_cast<int>(prm.integer("n"));
+  extreme::Method m = extreme::method(prm);
+  const reference::Sedov exact(D, m.gamma);
+  const double E = prm.real("E"), rho0 = prm.real("rho0");
+  if (radial::centre<D>(prm) != sph::Vec<D>::Zero())
+    throw InputError("sedov: centre is for scoring snapshots (sphv score); sphv run puts the blast at the origin");
+  if (prm.real("h_support") != 1.0)
+    throw InputError("sedov: h_support is for scoring snapshots (sphv score); sphv's h is the kernel's support");
+  m.controls.t_end = sedov::end_time(prm);
+  const sph::Box<D> box = sedov::box<D>();
+  // The blast in a cold gas (u_ambient: the similarity solution's, p0 / p_shock ~ 1e-6).
+  sph::Particles<D> p = sedov::initial_particles<D>(prm, m.hfact);
+  m.h_max = 0.45;  // below half the periodic box
+  const double r_b = prm.real("r_blast") * R_target;
+  double E0 = 0.0;
+  for (std::size_t i = 0; i < p.size(); ++i) E0 += p.m[i] * p.u[i];
+
+  const std::string kernel = prm.text("kernel");
+  const sph::HydroOutcome out = extreme::evolve_gas_kernel<D>(kernel, p, box, m);
+  Result r = radial::start(p.size(), out);
+  r.extra = {{"steps", out.steps}, {"t_reached", out.t}, {"t_end", m.controls.t_end}, {"xi0", exact.xi0()},
+             {"R_exact", exact.shock_radius(E, rho0, m.controls.t_end)}, {"dim", D}, {"r_blast", r_b},
+             {"blast_spacings", r_b * n}};
+  if (r.verdict != "stable") return r;
+
+  double E1 = 0.0, kinetic = 0.0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    kinetic += 0.5 * p.m[i] * p.v[i].squaredNorm();
+    E1 += p.m[i] * (0.5 * p.v[i].squaredNorm() + p.u[i]);
+  }
+  // The reference density is smoothed with the run's kernel (sedov/smoothed.hpp).
+  sph::with_kernel<D>(kernel, [&](auto k) {
+    sedov::measure<D, decltype(k)>(r, p.x, p.v, p.m, p.rho, p.h, 1.0, n, E, rho0, out.t, exact);
+  });
+  r.extra["energy_drift"] = (E1 - E0) / E0;
+  r.extra["kinetic_fraction"] = kinetic / E1;
+  r.extra["kinetic_fraction_exact"] = sedov::kinetic_share(exact, D);
+  r.particles = extreme::particle_table(p, m.gamma);
+  return r;
+}
+
+Result run(const Params& p) { return p.integer("dim") == 2 ? run_dim<2>(p) : run_dim<3>(p); }
+
+void validate(const Params& p) {
+  const long d = p.integer("dim"), n = p.integer("n");
+  if (d != 2 && d != 3) throw InputError("sedov: dim must be 2 or 3");
+  if (n < 8) throw InputError("sedov: need n >= 8 particles per side");
+  if (!(p.real("u_ambient") >= 0.0)) throw InputError("sedov: u_ambient must be >= 0");
+  const double r_blast = p.real("r_blast");
+  if (!(r_blast < 1.0)) throw InputError("sedov: r_blast must be below 1 (a fraction of the final shock radius)");
+  // The lattice particles nearest the centre sit at sqrt(d) / (2 n) from it.
+  if (p.text("kernel") != "cubic_spline" && (p.text("hmode") != "iterate50" || p.text("energy") != "38"))
+    throw InputError("sedov: kernel=" + p.text("kernel") + " runs with hmode=iterate50, energy=38 only");
+  if (r_blast * R_target <= std::sqrt(double(d)) / (2.0 * n))
+    throw InputError("sedov: r_blast R = " + std::to_string(r_blast * R_target) +
+                     " holds no particle: raise r_blast or n");
+}
+
+// L1_rho measured at the finest quick level of each catalogue variant (2D n = 64; 3D n = 24 at
+// r_blast 1/4, n = 32 at 1/2; one thread). The bound at a sweep's finest level is that + 20 %: no
+// variant's error grows beyond its finest quick level on the standard and full levels (3D at
+// r_blast 1/4: 0.3187 at n = 32, 0.2565 at 48).
+double l1_measured(const Params& p) {
+  if (p.integer("dim") == 3) return p.real("r_blast") == 0.5 ? 0.2514 : 0.3207;
+  if (p.real("gamma") == 1.4) return 0.3295;
+  return p.text("energy") == "41" ? 0.2015 : 0.2030;
+}
+
+std::vector<Check> gates(const Sweep& s) {
+  std::vector<Check> c = radial::per_level(s, [](const std::string& level, const Result& r, std::vector<Check>& c) {
+    // |R_front - R_front(rho_h)| / R, measured (one thread) at most 5.2 % in 2D (gamma 1.4,
+    // n = 32) and 6.8 % in 3D (n = 32; the front lags more at each finer level, see the claims).
+    // Tolerances: 2D 8 %, 3D 10 % (margin 1.5 over those).
+    if (!r.errors.count("shock_radius")) return;
+    const double tol = r.extra.value("dim", 2) == 3 ? 0.10 : 0.08;
+    c.push_back({level + "_shock_radius", r.errors.at("shock_radius"), 0.0, tol,
+                 "R_front within tol of the kernel-smoothed exact front (measured, margin stated in sedov.cpp)",
+                 Check::Kind::verification, "shock_radius"});
+  });
+  // The finest level of the sweep.
+  const Params p = find_case(s.case_name).parse(s.settings);
+  if (!s.runs.empty() && s.runs.back().errors.count("L1_rho")) {
+    const double m = l1_measured(p);
+    c.push_back({"n" + std::to_string(s.levels.back()) + "_L1_rho", s.runs.back().errors.at("L1_rho"), 0.0, 1.2 * m,
+                 "measured " + std::to_string(m) + " at the finest quick level + 20 %", Check::Kind::drift,
+                 "L1_rho"});
+  }
+  return c;
+}
+
+// Both errors have the similarity solution as their limit and are first order in h ~ 1/n once
+// the shock's smearing over a few h dominates: the density L1 from the smeared jump, the front
+// from the shock's width beyond the kernel's (the viscosity (38) spreads it over a few h; the
+// kernel's own smoothing is in the reference, sedov/errors.hpp) and from the blast's finite
+// deposit, whose memory fades as the deposit holds more particles.
+// 2D: the levels are pre-asymptotic, and the local orders of L1_rho rise towards 1 on 32..128.
+// gamma 1.4 is the slowest: the spike behind a gamma 1.4 shock is compressed 6 times, not 4, and
+// is thinner. Band 0.75 around 1: the lowest measured pre-asymptotic order, 0.27 (gamma 1.4,
+// n = 32 -> 64), minus a margin of 0.02. shock_radius converges faster than first order while the
+// blast's memory fades (the profile's lag behind the similarity solution falls faster than h on
+// these levels); band 0.8 around 1: the largest measured order, 1.69 ((41)), plus a margin of
+// 0.11. The series: docs/cases/sedov.md.
+// 3D: with the heat on R/4 the deposit spans 1.2, 1.8, 2.4 lattice spacings at n = 16, 24, 32
+// (2D's coarsest level, n = 32, already has 2.4), and the hot particles keep the heat: the kinetic
+// share of the energy stays below the exact 0.283 without rising, the front trails the
+// kernel-smoothed exact front further at each level and L1_rho does not fall; from n = 48 (3.6
+// spacings) the share rises and both errors fall. The same levels with the heat on R/2 (2.4-4.8
+// spacings) converge (docs/cases/sedov.md). A smaller Courant number (0.15) changes nothing (the
+// time step is not the cause), and the wider support hfact 4 does not converge either. So 3D at
+// R/4 is a known failure, with the deposit on R/2 as the variant that
+// converges; the deposit's finite size is remembered at t_end (the error's limit is the point
+// blast's only as the deposit shrinks, which at fixed r_blast it does not: on these levels the
+// shock's smearing is larger than that memory).
+OrderClaims sedov_orders(const Params& p) {
+  const OrderClaim radius{1.0, 0.8, "the front's offset from the kernel-smoothed exact front: the shock's width "
+                                    "beyond the kernel's and the blast's memory, first order in h ~ 1/n (faster "
+                                    "while the blast's memory fades)"};
+  const OrderClaim l1{1.0, 0.75, "a shock smeared over a few h: L1 first order in h at fixed hfact; "
+                                 "pre-asymptotic on the affordable levels (local orders rising towards 1)"};
+  if (p.integer("dim") == 3 && p.real("r_blast") == 0.25) {
+    const std::string why = "the blast's heat on R/4 spans {extra.blast_spacings} lattice spacings at {levels}: the hot "
+                            "particles keep it, the kinetic share of the energy is {extra.kinetic_fraction} against "
+                            "{extra.kinetic_fraction_exact} exact, the front's offset {extra.front_offset} and L1_rho "
+                            "{L1_rho}";
+    return {{"shock_radius", known_failure(radius.expected, radius.band, why, "dim=3,r_blast=0.5")},
+            {"L1_rho", known_failure(l1.expected, l1.band, why, "dim=3,r_blast=0.5")}};
+  }
+  return {{"shock_radius", radius}, {"L1_rho", l1}};
+}
+
+// Cost grows as n^3 (steps ~ n, particles ~ n^2; times: docs/cases/sedov.md). Quick: two levels
+// (the order claims are gated in CI); standard: three; full adds 256.
+const Levels levels = {.quick = {32, 64}, .standard = {32, 64, 128}, .full = {32, 64, 128, 256}};
+
+const Registration reg{Case{
+    .name = "sedov",
+    .summary = "Sedov-Taylor blast (2D/3D): shock radius and density profile against the similarity solution",
+    .n_counts = "particles per side of the periodic unit box",
+    .tags = {"gate", "extreme", "sweep"},
+    .params = [] {
+      std::vector<ParamSpec> ps = {integer_param("n", 32, "particles per side"),
+                                   integer_param("dim", 2, "dimension 2 or 3"),
+                                   real_param("u_ambient", 1e-6, "specific internal energy of the ambient gas"),
+                                   real_param("r_blast", 0.25, "radius of the blast's heat deposit / R(t_end)", 0.0),
+                                   real_param("E", 1.0, "blast energy", 0.0),
+                                   real_param("rho0", 1.0, "ambient density", 0.0),
+                                   ParamSpec{"t", ParamSpec::Kind::Real, "0", "end time; 0: when the shock reaches R = 0.3",
+                                             std::nullopt, 0.0},
+                                   radial::centre_param(),
+                                   real_param("h_support", 1.0,
+                                              "kernel support / the scored snapshot's h (sphv and SWIFT files 1: "
+                                              "the SWIFT reader converts; SPH-EXA 2)",
+                                              0.0)};
+      for (auto& q : extreme::method_params(5.0 / 3.0, 2.4)) ps.push_back(q);
+      ps.push_back(choice_param("kernel", "cubic_spline",
+                                "the kernel of the run and of the smoothed reference (sph/kernel/kernels.hpp; the "
+                                "blast's deposit keeps the cubic's weights); others with hmode=iterate50, energy=38",
+                                sph::kernel_names()));
+      return ps;
+    }(),
+    .levels = levels,
+    .orders = sedov_orders,
+    .error_defs = sedov::error_defs,
+    .variants = {{}, {"dim=3"}, {"dim=3", "r_blast=0.5"}, {"gamma=1.4"}, {"energy=41"}},
+    .levels_for = [](const Params& p) {
+      // 3D (cost ~ n^4; times: docs/cases/sedov.md). Quick: two levels
+      // each, so that CI gates the known failure (16, 24) and the converging variant (16, 32);
+      // standard: three; full adds 48.
+      if (p.integer("dim") == 3)
+        return Levels{.quick = p.real("r_blast") == 0.5 ? std::vector<long>{16, 32} : std::vector<long>{16, 24},
+                      .standard = {16, 24, 32},
+                      .full = {16, 24, 32, 48}};
+      return levels;
+    },
+    .validate = validate,
+    .run = run,
+    .gates = gates,
+    .scorer = sedov::scorer(),
+    .ic = sedov::initial_conditions,
+}};
+
+}  // namespace
+}  // namespace sphv::sedov_case

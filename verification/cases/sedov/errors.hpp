@@ -1,0 +1,136 @@
+#pragma once
+// The Sedov blast's errors and profiles at time t, shared by `sphv run` and `sphv score`.
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "reference/sedov.hpp"
+#include "sph/core/vec.hpp"
+#include "verification/cases/common/extreme_hydro.hpp"
+#include "verification/cases/common/radial_result.hpp"
+#include "verification/cases/sedov/smoothed.hpp"
+#include "verification/harness/params.hpp"
+
+namespace sphv::sedov {
+
+inline const std::map<std::string, std::string> error_defs = {
+    {"shock_radius",
+     "|R_front - R_front(rho_h)| / R, R = xi_0 (E t^2 / rho0)^(1/(d+2)); R_front: where the mean density in radial "
+     "bins of width 0.25/n on [0, 0.5) falls, going outwards from its peak bin, through (rho0 + peak) / 2 (linear "
+     "between bin centres); R_front(rho_h): the same estimator on the same bins applied to rho_h(r_i, h_i), the "
+     "exact density convolved with the cubic spline at each particle's support h_i (the SPH estimate of the exact "
+     "field). Not reported for a snapshot without h (extra shock_radius_halfrise: |R_front - R| / R)"},
+    {"L1_rho", "sum over particles with r < 1.2 R of (m_i/rho_i) |rho_i - rho_exact(r_i, t)|, divided by the ball's "
+               "volume vol_d(1.2 R) and by rho0 (r from the blast centre; exact: the Sedov-Taylor similarity solution)"},
+    {"mismatch", "sphv score's check that a snapshot holds the problem its settings describe (not an error): every "
+                 "particles farther than R + 2 support radii from the centre (h, or 3 spacings (m/rho)^(1/d) without "
+                 "h) are ambient gas at rest: median rho within 5 % of rho0 and median |v| within 5 % of the shock "
+                 "speed U, at most a tenth of them off by more; otherwise the verdict is mismatch"}};
+
+// The shock radius sphv's runs end at (box half-width 0.5).
+constexpr double R_target = 0.3;
+
+// The end time: the parameter t, or (t = 0) when the shock reaches R_target.
+inline double end_time(const Params& p) {
+  const double E = p.real("E"), rho0 = p.real("rho0"), t = p.real("t");
+  const int d = static_cast<int>(p.integer("dim"));
+  return t > 0.0 ? t : std::sqrt(std::pow(R_target / reference::Sedov(d, p.real("gamma")).xi0(), d + 2) * rho0 / E);
+}
+
+// The exact share of the blast's energy that is kinetic, sigma_d alpha^2 xi_0^(d+2) int_0^1
+// g f^2 / 2 xi^(d-1) dxi (the kinetic part of the energy integral, reference/sedov.hpp), by the
+// midpoint rule on 10^5 cells (the profiles are tabulated and linear between their points).
+inline double kinetic_share(const reference::Sedov& exact, int d) {
+  const double sigma = d == 2 ? 2.0 * M_PI : 4.0 * M_PI, alpha = 2.0 / (d + 2);
+  const int cells = 100000;
+  double sum = 0.0;
+  for (int k = 0; k < cells; ++k) {
+    const double xi = (k + 0.5) / cells, f = exact.f(xi);
+    sum += 0.5 * exact.g(xi) * f * f * std::pow(xi, d - 1);
+  }
+  return sigma * alpha * alpha * std::pow(exact.xi0(), d + 2) * sum / cells;
+}
+
+// The front of a radial density profile: binned at half the spacing (bins of 0.25 / n on
+// [0, 0.5)), where it falls, going outwards from its peak bin, through half-way between the
+// ambient density and the peak. The half-rise point of a symmetrically smoothed step is the step;
+// behind a blast the profile is a spike, and the level is crossed outside R by a fraction of the
+// kernel's support that does not depend on the code (hence the comparison with rho_h below).
+// found: the profile falls through the half level beyond its peak (else r_front is the peak
+// bin's); no particle within 0.5 of the centre (a scored snapshot's centre off its blast): no
+// profile, NaN.
+struct Front {
+  double r_front, r_peak, rho_peak;
+  bool found;
+};
+inline Front front(const std::vector<double>& rad, const std::vector<double>& rho, double rho0, int n) {
+  const extreme::Profile prof = extreme::radial_profile(rad, rho, 0.5, 2 * n);
+  if (prof.mean.empty()) return {std::nan(""), std::nan(""), std::nan(""), false};
+  const auto peak = std::max_element(prof.mean.begin(), prof.mean.end()) - prof.mean.begin();
+  const double fall = radial::falling_through(prof, 0.5 * (rho0 + prof.mean[peak]), prof.r[peak], -1.0);
+  return {fall < 0.0 ? prof.r[peak] : fall, prof.r[peak], prof.mean[peak], fall >= 0.0};
+}
+
+// Fills r.errors, r.functionals, the profile figures and extras from the particles at time t
+// (positions relative to the blast centre); n: particles per side of the unit box (bins 0.25 / n);
+// h: the particles' smoothing lengths (empty: the snapshot has none), whose kernel support is
+// support_per_h h (1 in sphv, whose h is the support, and for SWIFT files, whose reader
+// converts; 2 for SPH-EXA). K: the kernel the reference density is smoothed with, the run's.
+template <int D, class K = sph::CubicSpline<D>>
+void measure(Result& r, const std::vector<sph::Vec<D>>& x, const std::vector<sph::Vec<D>>& v, const std::vector<double>& m,
+             const std::vector<double>& rho, const std::vector<double>& h, double support_per_h, int n, double E,
+             double rho0, double t, const reference::Sedov& exact) {
+  const double R = exact.shock_radius(E, rho0, t), dx = 1.0 / n;
+  std::vector<double> rad(x.size());
+  for (std::size_t i = 0; i < x.size(); ++i) rad[i] = x[i].norm();
+  const Front f = front(rad, rho, rho0, n);
+  // L1 density error over the ball r < 1.2 R (shocked gas and some ambient gas), per unit volume
+  // of the ball: sum of particle volumes m / rho times |rho - rho_exact|, over the ball's volume.
+  const double ball = (D == 2 ? M_PI : 4.0 / 3.0 * M_PI) * std::pow(1.2 * R, D);
+  double l1 = 0.0, in_ball = 0.0;
+  for (std::size_t i = 0; i < x.size(); ++i)
+    if (rad[i] < 1.2 * R) l1 += m[i] / rho[i] * std::abs(rho[i] - exact.density(rad[i], E, rho0, t)), ++in_ball;
+  r.errors = {{"L1_rho", l1 / ball / rho0}};
+  r.functionals = {{"R_front", f.r_front}, {"rho_peak", f.rho_peak}};
+  r.extra["R_front_halfrise"] = f.r_front;
+  r.extra["shock_radius_halfrise"] = std::abs(f.r_front - R) / R;
+  r.extra["front_found"] = f.found;
+  r.extra["ball_particles"] = in_ball;
+  r.extra["R_peak"] = f.r_peak;
+  r.extra["rho_peak_binned"] = f.rho_peak;
+  r.extra["rho_peak_exact"] = exact.g(1.0) * rho0;
+  r.extra["bin_width"] = 0.25 * dx;
+  const auto densest = std::max_element(rho.begin(), rho.end()) - rho.begin();
+  if (!rho.empty()) r.extra["R_densest"] = rad[densest];
+  if (h.size() == x.size()) {
+    // rho_h at every binned particle; beyond r - h_i > R the kernel sees only ambient gas.
+    std::vector<double> rho_h(x.size(), rho0);
+    for (std::size_t i = 0; i < x.size(); ++i)
+      if (rad[i] < 0.5 && rad[i] - support_per_h * h[i] < R)
+        rho_h[i] = smoothed_density<D, K>(exact, rad[i], support_per_h * h[i], E, rho0, t);
+    const Front fh = front(rad, rho_h, rho0, n);
+    r.errors["shock_radius"] = std::abs(f.r_front - fh.r_front) / R;
+    r.extra["R_front_smoothed_exact"] = fh.r_front;
+    r.extra["front_offset"] = (f.r_front - fh.r_front) / R;
+    r.extra["R_peak_smoothed_exact"] = fh.r_peak;
+  } else {
+    r.extra["shock_radius_note"] = "no h column: shock_radius (against the kernel-smoothed exact front) not computed";
+  }
+
+  const std::string dim = std::to_string(D) + "D";
+  r.figures.push_back(radial::profile_figure(
+      "profile_rho", "Sedov " + dim + ", n = " + std::to_string(n) + ": density at t = " + std::to_string(t),
+      "r / R(t)", "rho / rho0", rad, rho, 1.5 * R, R, "Sedov-Taylor (similarity solution)",
+      [&](double s) { return exact.density(s, E, rho0, t) / rho0; }));
+  if (v.empty()) return;
+  const double U = exact.shock_speed(E, rho0, t);
+  std::vector<double> v_r(x.size());
+  for (std::size_t i = 0; i < x.size(); ++i) v_r[i] = v[i].dot(x[i]) / std::max(rad[i], 1e-300) / U;
+  r.figures.push_back(radial::profile_figure("profile_v", "Sedov " + dim + ": radial velocity", "r / R(t)",
+                                             "v_r / (dR/dt)", rad, v_r, 1.5 * R, R, "Sedov-Taylor",
+                                             [&](double s) { return exact.f(s / R); }));
+}
+
+}  // namespace sphv::sedov

@@ -1,6 +1,0 @@
-// The 3D shock tube instantiated (a file per dimension; one unit in a unity build, CMakeLists.txt).
-#include "verification/cases/sod_simulate.hpp"
-
-namespace sphv {
-template TubeRun simulate_tube<3>(const TubeProblem&, const TubeMethod&, long);
-}  // namespace sphv

@@ -1,0 +1,199 @@
+// Case `square`: the isobaric square (2D) or cube (3D, dim=3) of Saitoh & Makino 2013 (ApJ 768,
+// 44) and Hopkins 2015 (MNRAS 450, 53): density 4 inside the centred square of side 1/2, 1 outside,
+// p = 2.5 everywhere (gamma 5/3), at rest or carried by a uniform velocity v_adv through the
+// periodic unit box. Independent reference: reference/square, the initial state carried by v_adv
+// (exact: uniform p and v make every term of the Euler equations zero). The scheme is the hydro
+// cases' (summation density (27), Euler (23), energy (38), artificial viscosity (44)-(48), h by
+// (50)), i.e. the density-energy formulation, with the kernel named by `kernel`.
+//
+// Set-up (square/setup.hpp): equal-mass particles on two lattices (the dense one 2x finer in 2D),
+// as in the literature: each phase has the same neighbour number, and the jump is carried by the
+// spacing. lattice=one (masses rho(x)/n^d on one lattice) is the alternative for the smooth step.
+//
+// Errors at t_end = 1 (two sound crossings of the light gas' box, c_out = 2.04): v_rms, the light
+// gas' velocity noise over c_out; L1_rho, the density field against the exact step; misfit, the
+// area of the particles' cells on the wrong side of the square's edge (square/errors.hpp).
+// The density-energy form keeps u discontinuous while (27) smooths rho over h, so p = (gamma - 1)
+// rho u has an O(p) blip in a layer of width h at the contact: the spurious surface tension that
+// rounds the square's corners and drives the velocity noise. The blip's size does not fall with h,
+// and v_rms stays level: a known failure, shown by the smooth step of width 0.05 (lattice=one,
+// width=0.05), where the pressure is uniform to O(h^2) and v_rms falls (docs/cases/square.md
+// holds the measured series). L1_rho (the smearing over h) and misfit (the
+// displacement of the edge's particles, confined to the layer of width h) converge at first order.
+#include <cmath>
+#include <map>
+#include <string>
+
+#include "sph/kernel/kernels.hpp"
+#include "verification/harness/case.hpp"
+#include "verification/cases/common/extreme_hydro.hpp"
+#include "verification/cases/common/radial_result.hpp"
+#include "verification/cases/square/errors.hpp"
+#include "verification/cases/square/setup.hpp"
+#include "verification/cases/square/snapshots.hpp"
+#include "verification/harness/sweep.hpp"
+
+namespace sphv::square_case {
+namespace {
+
+template <int D>
+Result run_dim(const Params& prm) {
+  const long n = prm.integer("n");
+  extreme::Method m = extreme::method(prm);
+  m.controls.t_end = prm.real("t_end");
+  m.h_max = 0.45;  // below half the periodic box
+  const reference::IsobaricSquare sq = square::problem(prm);
+  sph::Particles<D> p = square::initial_particles<D>(prm);
+  const std::string kernel = prm.text("kernel");
+  const sph::Box<D> box = sph::unit_box<D>(true);
+  const sph::HydroOutcome out = extreme::evolve_gas_kernel<D>(kernel, p, box, m);
+  Result r = radial::start(p.size(), out);
+  r.extra = {{"steps", out.steps}, {"t_reached", out.t}, {"dim", D}};
+  if (r.verdict != "stable") return r;
+  square::measure<D>(r, p.x, p.v, p.m, p.rho, p.u, out.t, sq, m.gamma, n);
+  r.particles = extreme::particle_table(p, m.gamma);
+  return r;
+}
+
+Result run(const Params& p) {
+  if (p.integer("dim") == 2) return run_dim<2>(p);
+  return run_dim<3>(p);
+}
+
+void validate(const Params& p) {
+  const long d = p.integer("dim"), n = p.integer("n");
+  if (d != 2 && d != 3) throw InputError("square: dim must be 2 or 3");
+  if (n < 8 || n % 4 != 0)
+    throw InputError("square: n must be a multiple of 4 and at least 8 (the light lattice's cells tile the outside of "
+                     "the square [1/4, 3/4)^d), got " + std::to_string(n));
+  const double w = p.real("width");
+  if (!(w >= 0.0 && w <= 0.05))
+    throw InputError("square: width must lie in [0, 0.05] (0: the sharp step; above 0.05 the smooth profile's "
+                     "tanh tails reach the periodic box's edge), got " + p.text("width"));
+  if (w > 0.0 && p.text("lattice") != "one")
+    throw InputError("square: width > 0 needs lattice=one (two lattices realise only the sharp step)");
+  if (!(p.real("t_end") >= 0.0)) throw InputError("square: t_end must be >= 0 (0: score an initial state)");
+  if (p.text("kernel") != "cubic_spline" && (p.text("hmode") != "iterate50" || p.text("energy") != "38"))
+    throw InputError("square: kernel=" + p.text("kernel") + " runs with hmode=iterate50, energy=38 only");
+  const double count = std::pow(double(n), double(d)) *
+                       (p.text("lattice") == "two" ? 1.0 + std::pow(0.5, double(d)) * (p.real("contrast") - 1.0) : 1.0);
+  if (count > p.real("max_particles"))
+    throw InputError("square: n = " + std::to_string(n) + " in " + std::to_string(d) + "D means about " +
+                     std::to_string(static_cast<long>(count)) + " particles, above max_particles (raise it)");
+}
+
+// Whether the parameters are the smooth step's (the experiment that converges).
+bool smooth(const Params& p) { return p.real("width") > 0.0; }
+
+// The errors at the coarsest quick level of each catalogue variant (t_end = 1, C = 0.3), on 2
+// cores: bounds at 1.5 times these hold at every level where the error falls with n. v_rms of the
+// sharp step does not fall: its value is the largest measured on the quick levels instead. The
+// series per variant: docs/cases/square.md.
+std::map<std::string, double> measured(const Params& p) {
+  if (smooth(p)) return {{"L1_rho", 1.256e-2}, {"v_rms", 2.832e-3}};
+  const std::string k = p.text("kernel");
+  if (k == "quintic_spline") return {{"L1_rho", 4.095e-2}, {"misfit", 3.114e-2}, {"v_rms", 2.944e-3}};
+  if (k == "wendland_c4") return {{"L1_rho", 3.905e-2}, {"misfit", 3.220e-2}, {"v_rms", 3.123e-3}};
+  if (p.real("v_adv") != 0.0) return {{"L1_rho", 4.867e-2}, {"misfit", 5.180e-2}, {"v_rms", 2.934e-3}};
+  return {{"L1_rho", 4.867e-2}, {"misfit", 5.180e-2}, {"v_rms", 2.533e-3}};
+}
+
+std::vector<Check> gates(const Sweep& s) {
+  const Params prm = find_case(s.case_name).parse(s.settings);
+  const auto bound = measured(prm);
+  return radial::per_level(s, [&](const std::string& level, const Result& r, std::vector<Check>& c) {
+    for (const auto& [e, v] : bound)
+      c.push_back({level + "_" + e, r.errors.at(e), 0.0, 1.5 * v,
+                   e + " below 1.5 times its value measured at the variant's coarsest quick level (square.cpp)",
+                   Check::Kind::verification, e});
+    // The phase tag (square/errors.hpp) reads u against sqrt(u_in u_out), a factor 2 from either
+    // phase's u at contrast 4: it holds while no particle's u moves by a third of its own (measured
+    // at most 0.084). The smooth step has u between the phases' by construction: no check.
+    if (!smooth(prm)) c.push_back({level + "_phase_tag", r.extra.value("u_deviation_max", 1.0), 0.0, 1.0 / 3.0,
+                 "max |u_i / u_phase - 1| below 1/3: the phases stay apart in u, so the tag the errors use is sound",
+                 Check::Kind::verification, "v_rms"});
+  });
+}
+
+OrderClaims orders(const Params& p) {
+  OrderClaims c;
+  if (smooth(p)) {
+    // Bands: L1_rho measured local orders 1.74, 1.84 (n = 32..128), band 0.3; v_rms a standard
+    // fit of 2.30 +- 0.75, band 1. The fall of v_rms's local order below 2 at n = 128 is not
+    // explained (docs/cases/square.md).
+    c["L1_rho"] = {2.0, 0.3, "a smooth density at uniform pressure: the summation density (27) errs by O(h^2 rho'') "
+                             "with a symmetric kernel: second order"};
+    c["v_rms"] = {3.0, 1.0, "the pressure (gamma - 1) rho u errs by the density's O(h^2 rho''), and the velocity it "
+                            "drives with it: second order once h is well below the width; at the catalogue's levels h "
+                            "falls from above the width to below half of it, the profile is still being resolved, and "
+                            "that steepens the local order (band: 2 to 4)"};
+    return c;
+  }
+  c["L1_rho"] = {1.0, 0.3, "the summation density (27) spreads the step over the kernel's support h ~ 1/n along the "
+                           "edges (an L1 error of the jump times the perimeter times h): first order"};
+  // Band 0.4: measured 0.66 (n = 16, 32); on the standard levels a fit of 0.49 +- 0.09, inside the
+  // band widened by two standard errors, with a falling local order (docs/cases/square.md): the
+  // corners' rounding may approach a size of its own.
+  c["misfit"] = {1.0, 0.4, "the edge's particles move within the layer of width h ~ 1/n where the pressure blip acts: "
+                           "the area they leave on the wrong side of the edge is the perimeter times O(h): first order"};
+  c["v_rms"] = known_failure(
+      2.0, 0.5,
+      "the density-energy form's spurious surface tension at the sharp contact: the summation density (27) smooths the "
+      "step over h while u keeps it, so the pressure (gamma - 1) rho u jumps by O(p) across a layer of width h whatever "
+      "n (Saitoh & Makino 2013; Hopkins 2015); the noise it drives does not fall at a smooth flow's order: v_rms = "
+      "{v_rms} of c_out at {levels}, observed order {order.v_rms}",
+      "lattice=one,width=0.05");
+  return c;
+}
+
+const Levels levels = {.quick = {16, 32}, .standard = {16, 32, 64}, .full = {16, 32, 64, 128}};
+
+const Registration reg{Case{
+    .name = "square",
+    .summary = "isobaric square (2D) / cube (3D), density contrast 4 in pressure equilibrium: velocity noise, "
+               "density error and the dense phase's misfit against the static (or carried) exact state",
+    .n_counts = "light-phase particles per unit length (per side of the periodic unit box; a multiple of 4)",
+    .tags = {"gate", "sweep"},
+    .params = [] {
+      std::vector<ParamSpec> ps = {
+          integer_param("n", 32, "light-phase particles per side of the box (a multiple of 4)"),
+          integer_param("dim", 2, "dimension 2 or 3"),
+          real_param("contrast", 4.0, "rho_in / rho_out", 0.0),
+          real_param("rho_out", 1.0, "density of the light gas", 0.0),
+          real_param("p0", 2.5, "the uniform pressure", 0.0),
+          real_param("v_adv", 0.0, "uniform velocity along every axis (0: at rest)"),
+          real_param("width", 0.0, "width of the smooth step (0: sharp; > 0 needs lattice=one)"),
+          choice_param("lattice", "two", "equal masses on two lattices (sharp step), or one lattice with masses "
+                                         "rho(x) / n^d", {"two", "one"}),
+          real_param("t_end", 1.0, "end time"),
+          choice_param("kernel", "cubic_spline", "the kernel (sph/kernel/kernels.hpp); other than cubic_spline: "
+                                                 "hmode=iterate50, energy=38", sph::kernel_names()),
+          real_param("max_particles", 3e5, "refuse runs with more particles than this", 0.0)};
+      for (auto& q : extreme::method_params(5.0 / 3.0, 2.4)) ps.push_back(q);
+      return ps;
+    }(),
+    .levels = levels,
+    .orders = orders,
+    .error_defs = square::error_defs,
+    .variants = {{},
+                 {"lattice=one", "width=0.05"},
+                 {"v_adv=0.3"},
+                 {"kernel=quintic_spline"},
+                 {"kernel=wendland_c4"}},
+    .levels_for = [](const Params& p) {
+      if (smooth(p)) return Levels{.quick = {32, 64}, .standard = {32, 64, 128}, .full = {32, 64, 128, 256}};
+      // The carried square and the other kernels: quick at n = 16, 24 (the gate's CPU budget; their
+      // orders there lie inside the bands, docs/cases/square.md).
+      if (p.real("v_adv") != 0.0 || p.text("kernel") != "cubic_spline")
+        return Levels{.quick = {16, 24}, .standard = {16, 32, 64}, .full = {16, 32, 64, 128}};
+      return levels;
+    },
+    .validate = validate,
+    .run = run,
+    .gates = gates,
+    .scorer = square::scorer(),
+    .ic = square::initial_conditions,
+}};
+
+}  // namespace
+}  // namespace sphv::square_case
