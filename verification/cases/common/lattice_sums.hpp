@@ -12,6 +12,7 @@ namespace sphv {
 
 struct LatticeSums {
   double S0 = 0.0, S1 = 0.0;
+  double S1_across = 0.0;  // the momentum flux across the first axis (equal to S1 on a cubic lattice)
 };
 
 template <int D, class K = sph::CubicSpline<D>>
@@ -27,6 +28,38 @@ LatticeSums lattice_sums(double h) {
     const double r = std::sqrt(r2);
     s.S0 += K::W(r, h);
     s.S1 -= r * K::dWdr(r, h) / D;
+  }
+  s.S1_across = s.S1;
+  return s;
+}
+
+// The same sums on a lattice compressed c times along its first axis (spacing 1/c there, 1
+// across, as behind a planar shock that compressed a cubic lattice), with h from (50) at that
+// lattice's density: h = hfact c^(-1/D). S1 is the flux along the first axis, S1_across that
+// across it; each is 1 in the continuum.
+template <int D, class K = sph::CubicSpline<D>>
+LatticeSums compressed_lattice_sums(double hfact, double c) {
+  LatticeSums s;
+  const double a = 1.0 / c, h = hfact * std::pow(a, 1.0 / D);
+  const int k0 = static_cast<int>(std::ceil(h / a)), k = static_cast<int>(std::ceil(h));
+  const int n0 = 2 * k0 + 1, n = 2 * k + 1;
+  const int count = n0 * static_cast<int>(std::pow(n, D - 1));
+  for (int idx = 0; idx < count; ++idx) {
+    const double x = a * (idx % n0 - k0);
+    int rest = idx / n0;
+    double r2 = x * x, y2 = 0.0;
+    for (int d = 1; d < D; ++d) {
+      const double y = rest % n - k;
+      rest /= n;
+      r2 += y * y;
+      if (d == 1) y2 = y * y;
+    }
+    const double r = std::sqrt(r2);
+    s.S0 += a * K::W(r, h);
+    if (r > 0.0) {
+      s.S1 -= a * x * x / r * K::dWdr(r, h);
+      s.S1_across -= a * (D > 1 ? y2 : x * x) / r * K::dWdr(r, h);
+    }
   }
   return s;
 }

@@ -1,6 +1,7 @@
 // Cases `sod`, `sod2d`, `sod3d`: Sod's shock tube and Toro's Riemann problems 1-5 (or any
 // left/right state) with the hydrodynamics of 9.2-9.4.2, against the exact Riemann solver
 // (reference/riemann, Toro ch. 4). Errors are L1 over the tube [0, 1] at t_end.
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <map>
@@ -128,6 +129,14 @@ Figure profile(const std::string& field, const std::string& label, const TubeRun
   return f;
 }
 
+// The compression of the gas a shock crosses (rho* over the state ahead of it, 1 without a shock):
+// behind it the lattice is c times denser along the tube and as dense as before across it.
+double shock_compression(const Params& p) {
+  const TubeProblem pr = problem(p);
+  const reference::RiemannSolution exact(pr.left, pr.right, pr.gamma, pr.x0);
+  return std::max({1.0, exact.rho_star_left() / pr.left.rho, exact.rho_star_right() / pr.right.rho});
+}
+
 template <int D>
 Result run(const Params& p) {
   const TubeProblem pr = run_problem(p);
@@ -163,6 +172,12 @@ Result run(const Params& p) {
   sph::with_kernel<D>(p.text("kernel"), [&](auto k) { sums = lattice_sums<D, decltype(k)>(p.real("hfact")); });
   r.extra["lattice_S0_minus_1"] = sums.S0 - 1.0;
   r.extra["lattice_S1_minus_1"] = sums.S1 - 1.0;
+  if constexpr (D > 1) {
+    const double c = shock_compression(p);
+    const LatticeSums lc = compressed_lattice_sums<D>(p.real("hfact"), c);
+    r.extra["shock_compression"] = c;
+    r.extra["compressed_lattice_S1_across_minus_1"] = lc.S1_across - 1.0;
+  }
   const char* axes[] = {"x", "y", "z"};
   for (int d = 0; d < D; ++d) r.particles.add(axes[d], run.position[d]);
   r.particles.add("vx", run.v);
@@ -242,9 +257,9 @@ const std::map<std::string, Errors4> measured_1d = {
     {"integrator=chapter", {4.009e-3, 1.720e-2, 4.934e-3, 2.266e-2}},
     {"visc_h=full", {5.808e-3, 2.907e-2, 7.025e-3, 3.435e-2}},
 };
-// 2D: n = 200 (hfact 2.4), 100 (hfact 4); 3D: n = 24 (hfact 2.4), 16 (hfact 4).
+// 2D: n = 200 (hfact 2.4), 100 (hfact 6); 3D: n = 24 (hfact 2.4), 16 (hfact 4).
 const std::map<std::string, Errors4> measured_2d = {{"default", {1.528e-2, 3.821e-2, 1.668e-2, 4.012e-2}},
-                                                   {"hfact=4", {1.500e-2, 4.374e-2, 1.677e-2, 6.523e-2}}};
+                                                   {"hfact=6", {1.999e-2, 5.575e-2, 2.047e-2, 8.146e-2}}};
 const std::map<std::string, Errors4> measured_3d = {{"default", {4.474e-2, 1.095e-1, 5.945e-2, 1.452e-1}},
                                                    {"hfact=4", {3.938e-2, 1.141e-1, 4.919e-2, 1.916e-1}}};
 constexpr double bound_margin = 1.2, floor_fraction = 0.5;
@@ -255,12 +270,28 @@ const Errors4* measured(const Params& p, int dim) {
   return it == table.end() ? nullptr : &it->second;
 }
 
-// 2D/3D lattices at a support ratio where the kernel's lattice sums are off by more than 0.1 %
-// (common/lattice_sums.hpp): 2.4 gives S1 - 1 = -0.9 % (2D), -1.8 % (3D); 4 gives -0.09 %, -0.005 %.
+// 2D/3D lattices at a support ratio where the kernel's lattice sums are off by more than 0.2 %
+// (common/lattice_sums.hpp), on the initial lattice or on the lattice the shock compresses (there
+// h from (50) shrinks by c^(1/D) and spans fewer spacings across the tube): the tube's errors then
+// level off. Sod (c = 2.12): at hfact 2.4 the initial lattice's S1 is off by 0.9 % (2D), 1.8 %
+// (3D); at 4 the initial sums are within 0.09 % but the compressed lattice's flux across is off by
+// 1.75 % (2D), 0.46 % (3D), and L1_rho's local orders fall, 0.69 and 0.55 on n = 100..400 (2D);
+// at 6 every sum is within 0.11 % and they rise, 0.73, 0.87, 0.95 on 50..400.
+// 3D: the compressed lattice at hfact 4 is off by 0.46 % across; whether that levels the errors
+// off is not measured, as no affordable 3D level is asymptotic at any hfact (at 6, L1_rho is
+// 4.7e-2, 4.9e-2, 4.4e-2, 3.2e-2 on n = 16, 24, 32, 48: the right state's support radius spans
+// the plateau), so 3D judges the initial lattice only, at 0.1 %, and keeps the former claim.
+constexpr double lattice_tolerance = 2e-3;
 bool lattice_floor(const Params& p, int dim) {
   if (dim == 1) return false;
-  const LatticeSums l = dim == 2 ? lattice_sums<2>(p.real("hfact")) : lattice_sums<3>(p.real("hfact"));
-  return std::abs(l.S1 - 1.0) > 1e-3 || std::abs(l.S0 - 1.0) > 1e-3;
+  const double hfact = p.real("hfact");
+  if (dim == 3) {
+    const LatticeSums l = lattice_sums<3>(hfact);
+    return std::max(std::abs(l.S0 - 1.0), std::abs(l.S1 - 1.0)) > 1e-3;
+  }
+  const LatticeSums l = lattice_sums<2>(hfact), lc = compressed_lattice_sums<2>(hfact, shock_compression(p));
+  return std::max({std::abs(l.S0 - 1.0), std::abs(l.S1 - 1.0), std::abs(lc.S0 - 1.0), std::abs(lc.S1 - 1.0),
+                   std::abs(lc.S1_across - 1.0)}) > lattice_tolerance;
 }
 
 // Per level: stable, or (timestep=chapter) unstable as predicted. Then a bound on each error at
@@ -297,10 +328,10 @@ std::vector<Check> tube_gates(const Sweep& s, int dim) {
   }
   if (dim > 1 && !lattice_floor(p, dim) && s.runs.size() >= 2 && fine.errors.count("L1_rho") &&
       s.runs.front().errors.count("L1_rho"))
-    // 2D/3D at hfact 4: the error must fall with resolution (measured finest / coarsest level:
-    // 0.62 in 2D on 50..200, 0.71 in 3D on 16..32).
+    // 2D at hfact 6, 3D at 4: the error must fall with resolution (measured finest / coarsest
+    // level: 0.28 in 2D on 100..400, 0.71 in 3D on 16..32).
     c.push_back({"L1_rho_falls", fine.errors.at("L1_rho") / s.runs.front().errors.at("L1_rho"), 0.0, 0.9,
-                 "finest / coarsest level: must fall with resolution (measured 0.62 in 2D, 0.71 in 3D)",
+                 "finest / coarsest level: must fall with resolution (measured 0.28 in 2D, 0.71 in 3D)",
                  Check::Kind::verification, "L1_rho"});
   return c;
 }
@@ -321,10 +352,9 @@ const char* const why_former =
 
 OrderClaims first_order(const Params& p, int dim) {
   if (p.text("timestep") == "chapter") return {};  // unstable at every level: no errors
-  // The 2D and 3D tubes fall at 0.6 to 0.8 on their affordable levels (local orders in the report):
-  // they keep the former first-order claim, provisional under the acceptance rule, until levels
-  // that reach 1D's asymptotic range are affordable.
-  OrderClaim claim = dim == 1 ? at_least(0.74, why_first_order) : OrderClaim{1.0, 0.5, why_former};
+  // 3D: the affordable levels are pre-asymptotic (lattice_floor): the former first-order claim,
+  // provisional under the acceptance rule.
+  OrderClaim claim = dim < 3 ? at_least(0.74, why_first_order) : OrderClaim{1.0, 0.5, why_former};
   // (29) is the Eulerian rate d(rho)/dt + v . grad rho: wrong by v . grad rho wherever a
   // density gradient moves (the contact), an O(1) error that does not converge (order about 0):
   // the claim every tube makes fails, and the default summation (27)
@@ -345,16 +375,17 @@ OrderClaims first_order(const Params& p, int dim) {
                           "at {levels}; orders {order.L1_p}, {order.L1_u})",
                           "euler=23");
   else if (lattice_floor(p, dim))
-    // The tube's lattices keep h/dx = hfact on either side and, behind the shock and in the
-    // rarefaction, an anisotropically compressed lattice whose sums are further off: the errors
-    // stop falling at a level set by hfact, not n. The variant at hfact 4 (sums within 0.1 %)
-    // converges.
+    // The tube's lattices keep h/dx = hfact on either side and, behind the shock, a lattice
+    // compressed along the tube whose sums across it are further off (lattice_floor): the errors
+    // stop falling at a level set by hfact, not n. The variant at hfact 6 (every sum within
+    // 0.11 %) converges.
     claim = known_failure(claim,
-                          "fixed-h/dx lattice-sum floor: on the initial lattice at this hfact the kernel's density sum "
-                          "is off by {extra.lattice_S0_minus_1} and the pressure force's momentum flux by "
-                          "{extra.lattice_S1_minus_1} (more on the lattice compressed behind the shock), whatever n; "
+                          "fixed-h/dx lattice-sum floor: at this hfact the kernel's density sum on the initial lattice "
+                          "is off by {extra.lattice_S0_minus_1}, the pressure force's momentum flux by "
+                          "{extra.lattice_S1_minus_1}, and across the lattice the shock compresses "
+                          "{extra.shock_compression} times by {extra.compressed_lattice_S1_across_minus_1}, whatever n; "
                           "L1_rho {L1_rho} at {levels}",
-                          "hfact=4");
+                          dim == 2 ? "hfact=6" : "hfact=4");
   if (!measured(p, dim)) {
     if (find_case(dim == 1 ? "sod" : "sod" + std::to_string(dim) + "d").method_in_catalogue(p)) claim.unbounded = true;
     else claim = no_order("method settings outside the catalogue's variants: no claim measured for this method, only the verdict is gated");
@@ -410,11 +441,15 @@ Case make_case(int dim) {
                   {"visc_h=full"}};
     c.run = run<1>;
   } else if (dim == 2) {
-    // Quick: two levels each, so that CI gates the order (hfact 2.4: the known failure; 4: the claim).
+    // Quick: the known failure at two levels (CI gates that it stays below the claim).
     c.levels = {.quick = {100, 200}, .standard = {100, 200, 400}, .full = {100, 200, 400, 800}};
-    c.variants = {{}, {"hfact=4"}};
+    // hfact 6 is the smallest support whose lattices, initial and compressed, stay within 0.2 %
+    // (lattice_floor; at 4 the density and pressure errors level off, docs/cases/sod.md). It
+    // converges from n = 100 (local orders 0.79 to 1.0 from 200 to 400), where its L1_u and L1_v
+    // still fall at 0.69 and 0.62 to n = 200: one level in quick (4 s), 100..400 in standard (70 s).
+    c.variants = {{}, {"hfact=6"}};
     c.levels_for = [](const Params& p) {
-      if (p.real("hfact") == 4.0) return Levels{.quick = {50, 100}, .standard = {50, 100, 200}, .full = {50, 100, 200, 400}};
+      if (p.real("hfact") == 6.0) return Levels{.quick = {100}, .standard = {100, 200, 400}, .full = {100, 200, 400, 800}};
       return Levels{.quick = {100, 200}, .standard = {100, 200, 400}, .full = {100, 200, 400, 800}};
     };
     c.run = run<2>;
