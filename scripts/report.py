@@ -23,8 +23,8 @@ from urllib.parse import quote
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import report_figures as figs  # noqa: E402
 import report_kernels  # noqa: E402
-from report_data import (OUTCOMES, claim_notes, counts, errors_of, expected_text, file_of, fmt, is_dirty, load, num, order_text,  # noqa: E402
-                         provenances, read_json, row_note, row_reason, slug, sweep_wide_failures, threads_text, variant_named)
+from report_data import (OUTCOMES, claim_notes, claim_order_text, counts, errors_of, expected_text, file_of, fmt,  # noqa: E402
+                         is_dirty, load, num, order_text, provenances, read_json, row_note, row_reason, slug, sweep_wide_failures, threads_text, variant_named)
 
 ROOT = Path(__file__).resolve().parent.parent
 CSS = """body{font-family:sans-serif;max-width:1250px;margin:auto;padding:0 12px;line-height:1.35}
@@ -268,7 +268,8 @@ def index_page(name, sweeps, missing, tier, mutants_link, drawn=frozenset()):
 
 def claim_sentence(case, ss):
     s = ss[0]
-    claimed = [f"{e(r['error'])} converges at order {r['expected']:g} ± {r.get('band', 0):g}"
+    claimed = [f"{e(r['error'])} converges at "
+               + claim_order_text(s.get("claims", {}).get(r["error"]) or {"expected": r["expected"], "band": r.get("band", 0)})
                for r in s["rows"] if num(r.get("expected"))]
     no_claim = [r["error"] for r in s["rows"] if not num(r.get("expected"))]
     text = f"<b>{e(case)}</b>: {e(s.get('summary', ''))}. "

@@ -89,6 +89,17 @@ def expected_text(row):
     return text + f" [{lo:.3g}, {hi:.3g}]" if num(lo) and num(hi) else text
 
 
+def claim_tex(row, missing):
+    """The claim in LaTeX: "$1 \\pm 0.3$", or "$\\geq 0.74$" for a one-sided claim (its window has no
+    upper edge); `missing` where no order is claimed."""
+    if not num(row.get("expected")):
+        return missing
+    window = list(row.get("window") or []) + [None, None]
+    if num(window[0]) and not num(window[1]):
+        return f"$\\geq {window[0]:.3g}$"
+    return f"${row['expected']:.3g} \\pm {row.get('band', 0):.3g}$"
+
+
 def local_text(row):
     """The local orders between neighbouring levels, coarse to fine (the asymptotic range)."""
     local = [f2(p) for p in row.get("local_orders") or [] if num(p)]
@@ -140,7 +151,7 @@ def claim_notes(ss):
             if r["outcome"] == "known failure":
                 item = (r["error"], f"known failure of order {expected_text(r)}", known_text(r))
             elif num(c.get("expected")):
-                item = (r["error"], f"order {c['expected']:g} ± {c.get('band', 0):g}", c.get("why", ""))
+                item = (r["error"], claim_order_text(c), c.get("why", ""))
             else:
                 item = (r["error"], "no order claimed", r.get("why", "") or c.get("why", ""))
             if item[2] and item not in items:
@@ -177,6 +188,13 @@ def errors_of(s):
     for run in s["runs"]:
         names += [e for e in run.get("errors", {}) if e not in names]
     return names
+
+
+def claim_order_text(c):
+    """A claim as words: "order 1 ± 0.3", or "order at least 0.74" for a one-sided claim."""
+    if c.get("at_least"):
+        return f"order at least {c['expected']:g}"
+    return f"order {c['expected']:g} ± {c.get('band', 0):g}"
 
 
 def claim(s, error):

@@ -110,7 +110,8 @@ def convergence(case, s, row, stem):
         ax.loglog(n, fit_line(n, y, row["observed"]), "-", color="C0", lw=1, label="fit, " + order_label(row["observed"], row.get("se")))
     q, band = c["expected"], c.get("band", 0.0) or 0.0
     guide = lambda order: y[-1] * (n / n[-1]) ** (-order)  # noqa: E731
-    ax.loglog(n, guide(q), "--", color="C3", lw=1, label=f"expected ${q:.3g} \\pm {band:.3g}$")
+    claimed = f"$\\geq {q:.3g}$" if c.get("at_least") else f"${q:.3g} \\pm {band:.3g}$"
+    ax.loglog(n, guide(q), "--", color="C3", lw=1, label="expected " + claimed)
     if band > 0:
         ax.fill_between(n, guide(q - band), guide(q + band), color="C3", alpha=0.12, lw=0)
     level_ticks(ax, n)

@@ -6,7 +6,7 @@ the hydrodynamics cases with each known failure beside the experiment that conve
 
 The numbers are the harness's: the window of a claim is the acceptance interval its order check
 recorded in sweep.json (or a "window" the row or the claim carries), never one computed here."""
-from report_data import OUTCOMES, f2, num, series, variant_named
+from report_data import OUTCOMES, claim_tex, f2, num, series, variant_named
 import re
 
 import report_figures as figs
@@ -100,7 +100,7 @@ def order_tex(row):
 
 
 def expected_tex(row):
-    return f"${row['expected']:.3g} \\pm {row.get('band', 0):.3g}$" if num(row.get("expected")) else "--"
+    return claim_tex(row, "--")
 
 
 def levels_tex(s):
@@ -280,10 +280,11 @@ def section(sweeps, figdir, copy, provenance_sentence):
          r"acceptance interval of the harness's order check, as recorded with the results), the fit resolves the order "
          r"and $E$ lies under its bound; \emph{no claim} means the error has no convergent limit, as the case states, and "
          r"its bounds hold; a \emph{known failure} misses its order for a reason the case states and names the variant "
-         r"that converges instead; \emph{fail} means a check on that error failed. Over all "
-         f"{n_var} variants of the {len(sweeps)} cases: {n_rows['verified']} errors verified, {n_rows['known failure']} "
-         f"known failure{'s' if n_rows['known failure'] != 1 else ''}, {n_rows['no order claimed']} with no order claimed, "
-         f"{n_rows['fail']} failing. " + ("; ".join(refs) + "; " if refs else "") +
+         r"that converges instead; \emph{provisional} means the error lies inside the former window $p_0 \pm (b + 2\sigma_p)$ "
+         r"but not the acceptance rule's, and is not counted as verified; \emph{fail} means a check on that error failed. "
+         f"Over all {n_var} variants of the {len(sweeps)} cases: {n_rows['verified']} errors verified, {n_rows['known failure']} "
+         f"known failure{'s' if n_rows['known failure'] != 1 else ''}, {n_rows.get('provisional', 0)} provisional, "
+         f"{n_rows['no order claimed']} with no order claimed, {n_rows['fail']} failing. " + ("; ".join(refs) + "; " if refs else "") +
          r"the supplement (\texttt{verification-supplement.tex}) holds every variant, check, error definition and figure.", ""]
     t += table(sweeps)
     for (stem, caption), label in made:

@@ -19,7 +19,7 @@ from pathlib import Path
 import report_bib
 import report_kernels
 import report_paper
-from report_data import (claim_notes, f2, file_of, fmt, is_dirty, num, provenances, row_note, slug,
+from report_data import (claim_notes, claim_tex, f2, file_of, fmt, is_dirty, num, provenances, row_note, slug,
                          sweep_wide_failures, threads_text)
 from report_math import error_name, latex, prose
 
@@ -50,7 +50,7 @@ def order_tex(row):
 
 
 def expected_tex(row):
-    return f"${row['expected']:.3g} \\pm {row.get('band', 0):.3g}$" if num(row.get("expected")) else "none"
+    return claim_tex(row, "none")
 
 
 # Each outcome in its own colour, as in the HTML report (xcolor).

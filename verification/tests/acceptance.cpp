@@ -9,6 +9,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "verification/harness/sweep.hpp"
@@ -138,5 +141,53 @@ TEST_CASE("acceptance: a known failure stands only beside an experiment that ver
   SECTION("a converging known failure fails, whatever its standard error") {
     std::vector<sphv::Sweep> all = {sweep(known, runs(levels4, 1.0, 0.2))};
     CHECK(all[0].rows.at(0).outcome == "fail");
+  }
+}
+
+// The window's lower edge strictly above half the claimed order (OrderClaim, case.hpp): a claim
+// whose edge sits exactly at half, expected - band = expected / 2, admits a code at half the order.
+// Data converging at exactly that half (err = n^-p, a fit with zero residual) must not verify,
+// for a band within max_band (0.5 +- 0.25) and for one derived from theory (2 +- 1).
+TEST_CASE("acceptance: a window whose lower edge is exactly half the claimed order is rejected (known answer)",
+          "[acceptance]") {
+  const auto low = sweep(sphv::OrderClaim{0.5, 0.25, "half-order claim"}, runs(levels4, 0.25));
+  INFO(low.rows.at(0).outcome << ": " << low.rows.at(0).why);
+  CHECK(low.rows.at(0).outcome != "verified");
+  CHECK(low.rows.at(0).why.find("window_e") != std::string::npos);  // provisional or failed, by the window
+  const auto derived = sweep(sphv::derived_band(2.0, 1.0, "between", "a derivation"), runs(levels4, 1.0));
+  INFO(derived.rows.at(0).outcome << ": " << derived.rows.at(0).why);
+  CHECK(derived.rows.at(0).outcome != "verified");
+  CHECK(derived.rows.at(0).why.find("window_e") != std::string::npos);
+}
+
+// err_k = n_k^-p exp(eps c_k), c = (1, -1, -1, 1) on the levels 16..128 (ln n equally spaced by
+// ln 2): c is orthogonal to 1 and to k, so the least-squares slope is exactly -p and the residual
+// sum of squares 4 eps^2, whence se = sqrt(4 eps^2 / 2 / (5 ln^2 2)) = eps sqrt(0.4) / ln 2.
+namespace {
+std::vector<sphv::Result> runs_with_se(double p, double eps) {
+  std::vector<sphv::Result> out = runs(levels4, p);
+  const double c[4] = {1.0, -1.0, -1.0, 1.0};
+  for (std::size_t k = 0; k < out.size(); ++k) out[k].errors["e"] *= std::exp(eps * c[k]);
+  return out;
+}
+}  // namespace
+
+// A known failure whose order comes inside its window has stopped failing: its mark must go,
+// whatever the fit's standard error (the rule's "no widening or narrowing by the se"). Orders 0.8
+// and 1.2, inside 1 +- 0.25 by 0.05, with se = 0.091 (eps 0.1), and the centre with se 0.27,
+// above the band.
+TEST_CASE("acceptance: a known failure converging inside its window is flagged at any standard error (known answer)",
+          "[acceptance]") {
+  const auto known = sphv::known_failure(sphv::OrderClaim{1.0, 0.25, "first order"}, "levels off", "variant=1");
+  for (const auto& [p, eps] : std::initializer_list<std::pair<double, double>>{{0.8, 0.1}, {1.2, 0.1}, {1.0, 0.3}}) {
+    INFO("p = " << p << ", eps = " << eps);
+    const auto s = sweep(known, runs_with_se(p, eps));
+    REQUIRE(s.observed_order.count("e"));
+    CHECK(s.observed_order.at("e").p == Approx(p).epsilon(1e-12));
+    CHECK(s.observed_order.at("e").se == Approx(eps * std::sqrt(0.4) / std::log(2.0)).epsilon(1e-9));
+    REQUIRE(check(s, "known_failure_order_e") != nullptr);
+    CHECK_FALSE(check(s, "known_failure_order_e")->pass());
+    CHECK(s.rows.at(0).outcome == "fail");
+    CHECK_FALSE(s.passed());
   }
 }

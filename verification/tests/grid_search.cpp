@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <initializer_list>
 #include <random>
 #include <utility>
@@ -57,7 +58,52 @@ void compare(std::size_t n, bool periodic, double hmin, double hmax, unsigned se
   }
 }
 
+// A periodic box [lo, lo + L) that does not start at 0, particles anywhere in [lo - L, lo + 2L):
+// the brute-force pairs at the nearest image with L typed here, dx - L round(dx / L), not from
+// the box (every other test's box is [0, 1), where hi and the length agree).
+template <int D>
+void compare_offset_box(std::size_t n, double lo, double L, double hmin, double hmax, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0), uh(hmin, hmax);
+  sph::Box<D> box = sph::unit_box<D>(true);
+  for (int d = 0; d < D; ++d) box.lo[d] = lo, box.hi[d] = lo + L;
+  std::vector<sph::Vec<D>> x(n);
+  std::vector<double> h(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    for (int d = 0; d < D; ++d) x[i][d] = lo + (u(rng) * 3.0 - 1.0) * L;
+    h[i] = uh(rng);
+  }
+  const auto nl = sph::grid_search<D>(x, h, box);
+  std::size_t pairs = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    std::vector<int> brute;
+    for (std::size_t j = 0; j < n; ++j) {
+      double r2 = 0.0;
+      for (int d = 0; d < D; ++d) {
+        const double dx = x[i][d] - x[j][d];
+        r2 += std::pow(dx - L * std::round(dx / L), 2);
+      }
+      const double rs = std::max(h[i], h[j]);
+      if (j != i && r2 < rs * rs) brute.push_back(int(j));
+    }
+    std::vector<int> grid(nl.of(i).begin(), nl.of(i).end());
+    std::sort(grid.begin(), grid.end());
+    INFO("particle " << i);
+    REQUIRE(grid == brute);
+    pairs += brute.size();
+  }
+  REQUIRE(pairs == nl.pairs());
+}
+
 }  // namespace
+
+TEST_CASE("grid search equals brute force in periodic boxes that do not start at 0", "[neighbours]") {
+  compare_offset_box<1>(300, -0.5, 1.0, 0.01, 0.05, 11);  // [-0.5, 0.5): hi 0.5, length 1
+  compare_offset_box<2>(800, -0.5, 1.0, 0.03, 0.08, 12);
+  compare_offset_box<3>(1500, -0.5, 1.0, 0.05, 0.15, 13);
+  compare_offset_box<2>(800, -0.25, 1.25, 0.03, 0.08, 14);  // [-0.25, 1): hi 1, length 1.25
+  compare_offset_box<3>(1500, 0.3, 0.9, 0.05, 0.12, 15);    // [0.3, 1.2): lo > 0
+}
 
 // On every instruction-set path this CPU has (the 3D candidate loop has AVX2 and AVX-512 copies).
 TEST_CASE("grid search equals brute force", "[neighbours]") {

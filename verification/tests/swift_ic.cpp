@@ -9,9 +9,13 @@
 #include <cmath>
 #include <filesystem>
 #include <set>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "verification/cases/shock_tubes/errors.hpp"
 #include "verification/commands/ic.hpp"
+#include "verification/snapshot/snapshot.hpp"
 
 namespace fs = std::filesystem;
 using namespace sphv;
@@ -171,6 +175,87 @@ TEST_CASE("swift ic: sedov, noh and evrard are read as SWIFT reads them, centred
       double mx = 0.0, m = 0.0;
       for (long long i = 0; i < r.n; ++i) mx += r.gas.at("Masses")[i] * r.gas.at("Coordinates")[3 * i + d], m += r.gas.at("Masses")[i];
       CHECK(mx / m == Approx(one.box / 2.0).epsilon(1e-6));
+    }
+  }
+}
+
+// SWIFT's cubic spline (M4, its default) reaches kernel_gamma times its SmoothingLength, with
+// kernel_gamma compiled in per dimension: 1.732051 (1D), 1.778002 (2D), 1.825742 (3D), as
+// SWIFT's src/kernel_hydro.h defines them (from Dehnen & Aly 2012, MNRAS 425, 1062, table 1),
+// typed here, not taken from swift_kernel_gamma(). The file must state that value and divide
+// sphv's support radius (50) by it, for the tubes in 1D and 2D and for sedov in 3D; the
+// tolerance 1e-6 is SWIFT's float32 SmoothingLength and attribute (7 digits).
+TEST_CASE("swift ic: SmoothingLength is the support radius over SWIFT's published kernel_gamma (known answer)",
+          "[score]") {
+  const double published[4] = {0.0, 1.732051, 1.778002, 1.825742};
+  for (int dim = 1; dim <= 3; ++dim) CHECK(swift_kernel_gamma(dim) == Approx(published[dim]).epsilon(1e-7));
+  struct One {
+    std::string name;
+    std::vector<std::string> settings;
+    int dim;
+  };
+  for (const One& one : {One{"sod", {"n=40"}, 1}, One{"sod2d", {"n=40"}, 2}, One{"sedov", {"n=16", "dim=3"}, 3}}) {
+    INFO(one.name);
+    const fs::path file = written(one.name, one.settings);
+    const hid_t f = H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    REQUIRE(f >= 0);
+    const hid_t g = H5Gopen2(f, "/HydroScheme", H5P_DEFAULT);
+    REQUIRE(g >= 0);
+    const double stated = attribute<double>(g, "Kernel gamma", H5T_NATIVE_DOUBLE, 1)[0];
+    H5Gclose(g);
+    H5Fclose(f);
+    CHECK(stated == Approx(published[one.dim]).epsilon(1e-7));
+    const Read r = read_like_swift(file);
+    fs::remove(file);
+    REQUIRE(r.n > 0);
+    if (one.dim == 3) continue;  // sedov: the attribute above (its density is the lattice's, not a state's)
+    const Params p = find_case(one.name).parse(one.settings);
+    const double hfact = p.real("hfact");
+    const TubeProblem pr = tube_problem(p);
+    for (long long i = 0; i < r.n; ++i) {
+      const double x = r.gas.at("Coordinates")[3 * i];
+      const double rho = (x < 1.0 ? pr.left : pr.right).rho;
+      const double support = hfact * std::pow(r.gas.at("Masses")[i] / rho, 1.0 / one.dim);
+      CHECK(r.gas.at("SmoothingLength")[i] * published[one.dim] == Approx(support).epsilon(1e-6));
+    }
+  }
+}
+
+// Reading: two real SWIFT snapshots (verification/tests/data/README.md: SWIFT's 1D Sod and 3D
+// Sedov examples, cubic spline) give sphv's h = kernel_gamma x SmoothingLengths with SWIFT's
+// published kernel_gamma for the dimension (1.732051 in 1D, 1.825742 in 3D, src/kernel_hydro.h),
+// typed here; the file's own /HydroScheme Kernel gamma must state the same value. Tolerance 1e-6:
+// the attribute and the lengths are float32 (7 digits).
+TEST_CASE("swift snapshot: h is SmoothingLengths times SWIFT's published kernel_gamma (known answer)", "[score]") {
+  for (const auto& [name, published] : {std::pair<std::string, double>{"swift_sod1d_orig_t0.2.hdf5", 1.732051},
+                                        {"swift_sedov3d_lattice32_t0.05.hdf5", 1.825742}}) {
+    INFO(name);
+    const fs::path file = fs::path(SPHV_SOURCE_DIR) / "verification/tests/data" / name;
+    const hid_t f = H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    REQUIRE(f >= 0);
+    const hid_t scheme = H5Gopen2(f, "/HydroScheme", H5P_DEFAULT);
+    REQUIRE(scheme >= 0);
+    CHECK(attribute<double>(scheme, "Kernel gamma", H5T_NATIVE_DOUBLE, 1)[0] == Approx(published).epsilon(1e-6));
+    H5Gclose(scheme);
+    const hid_t gas = H5Gopen2(f, "/PartType0", H5P_DEFAULT);
+    REQUIRE(gas >= 0);
+    const char* lengths = H5Lexists(gas, "SmoothingLengths", H5P_DEFAULT) > 0 ? "SmoothingLengths" : "SmoothingLength";
+    const hid_t d = H5Dopen2(gas, lengths, H5P_DEFAULT);
+    REQUIRE(d >= 0);
+    const hid_t space = H5Dget_space(d);
+    const auto n = static_cast<std::size_t>(H5Sget_simple_extent_npoints(space));
+    H5Sclose(space);
+    std::vector<double> raw(n);
+    REQUIRE(H5Dread(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, raw.data()) >= 0);
+    H5Dclose(d);
+    H5Gclose(gas);
+    H5Fclose(f);
+    const Snapshot s = read_snapshot(file);
+    REQUIRE(s.has("h"));
+    REQUIRE(s.columns.at("h").size() == n);
+    for (std::size_t i = 0; i < n; ++i) {
+      INFO("particle " << i);
+      REQUIRE(s.columns.at("h")[i] == Approx(published * raw[i]).epsilon(1e-6));
     }
   }
 }

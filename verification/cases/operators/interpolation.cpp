@@ -172,7 +172,7 @@ OrderClaims orders(const Params& p) {
   if (p.real("jitter") > 0.0) {
     OrderClaims o;
     for (const auto& [e, terms] : disorder_terms())
-      o[e] = disorder::jittered_claim(static_cast<int>(p.integer("dim")), p.real("hgrow"), terms, e);
+      o[e] = disorder::jittered_claim(static_cast<int>(p.integer("dim")), p.real("hgrow"), terms, 0.1, e);
     return o;
   }
   const long dim = p.integer("dim");

@@ -180,7 +180,7 @@ OrderClaims orders(const Params& p) {
   if (p.real("jitter") > 0.0) {
     OrderClaims o;
     for (const auto& [e, terms] : disorder_terms())
-      o[e] = disorder::jittered_claim(dim, p.real("hgrow"), terms, e);
+      o[e] = disorder::jittered_claim(dim, p.real("hgrow"), terms, e.rfind("flux", 0) == 0 ? 0.3 : 0.15, e);
     return o;
   }
   if (p.real("hgrow") > 0.0) {
