@@ -17,9 +17,9 @@ namespace sphv::sedov {
 
 inline const std::map<std::string, std::string> error_defs = {
     {"shock_radius",
-     "|R_front - R_front(rho_h)| / R, R = xi_0 (E t^2 / rho0)^(1/(d+2)); R_front: where the mean density in radial "
-     "bins of width 0.25/n on [0, 0.5) falls, going outwards from its peak bin, through (rho0 + peak) / 2 (linear "
-     "between bin centres); R_front(rho_h): the same estimator on the same bins applied to rho_h(r_i, h_i), the "
+     "|R_front - R_front(rho_h)| / R, R = xi_0 (E t^2 / rho0)^(1/(d+2)); R_front: where the mean density in a radial "
+     "window of width 1/n, sliding in steps of 0.25/n on [0, 0.5), falls, going outwards from its peak, through "
+     "(rho0 + peak) / 2 (linear between window centres); R_front(rho_h): the same estimator on the same bins applied to rho_h(r_i, h_i), the "
      "exact density convolved with the cubic spline at each particle's support h_i (the SPH estimate of the exact "
      "field). Not reported for a snapshot without h (extra shock_radius_halfrise: |R_front - R| / R)"},
     {"L1_rho", "sum over particles with r < 1.2 R of (m_i/rho_i) |rho_i - rho_exact(r_i, t)|, divided by the ball's "
@@ -53,20 +53,43 @@ inline double kinetic_share(const reference::Sedov& exact, int d) {
   return sigma * alpha * alpha * std::pow(exact.xi0(), d + 2) * sum / cells;
 }
 
-// The front of a radial density profile: binned at half the spacing (bins of 0.25 / n on
-// [0, 0.5)), where it falls, going outwards from its peak bin, through half-way between the
-// ambient density and the peak. The half-rise point of a symmetrically smoothed step is the step;
-// behind a blast the profile is a spike, and the level is crossed outside R by a fraction of the
-// kernel's support that does not depend on the code (hence the comparison with rho_h below).
-// found: the profile falls through the half level beyond its peak (else r_front is the peak
-// bin's); no particle within 0.5 of the centre (a scored snapshot's centre off its blast): no
-// profile, NaN.
+// The front of a radial density profile: the mean density over particles in a window one
+// spacing wide (1/n) that slides outwards in steps of a quarter spacing on [0, 0.5), and where
+// that profile falls, going outwards from its peak, through half-way between the ambient density
+// and the peak. A lattice's shells lie a fraction of a spacing apart, so a narrower bin holds a
+// few shells or none and its mean jumps when a shell crosses its edge; a window one spacing wide
+// always holds about one spacing's worth of shells, and a shell moving across a quarter-spacing
+// step changes the peak by a fraction of that shell's weight. The half-rise point of a
+// symmetrically smoothed step is the step; behind a blast the profile is a spike, and the level
+// is crossed outside R by a fraction of the kernel's support that does not depend on the code
+// (hence the comparison with rho_h below). found: the profile falls through the half level
+// beyond its peak (else r_front is the peak's); no particle within 0.5 of the centre (a scored
+// snapshot's centre off its blast): no profile, NaN.
 struct Front {
   double r_front, r_peak, rho_peak;
   bool found;
 };
+inline extreme::Profile sliding_profile(const std::vector<double>& rad, const std::vector<double>& rho, int n) {
+  constexpr int steps = 4;  // quarter-spacing steps per window
+  const int bins = 2 * n;   // 0.5 / (0.25 / n)
+  const double dr = 0.5 / bins;
+  std::vector<double> sum(bins, 0.0);
+  std::vector<long> count(bins, 0);
+  for (std::size_t i = 0; i < rad.size(); ++i) {
+    const double q = rad[i] / dr;  // compared before the cast (NaN and huge q stay out)
+    if (q >= 0.0 && q < bins) sum[static_cast<int>(q)] += rho[i], ++count[static_cast<int>(q)];
+  }
+  extreme::Profile prof;
+  for (int k = 0; k + steps <= bins; ++k) {
+    double s = 0.0;
+    long c = 0;
+    for (int j = k; j < k + steps; ++j) s += sum[j], c += count[j];
+    if (c > 0) prof.r.push_back((k + 0.5 * steps) * dr), prof.mean.push_back(s / c), prof.count.push_back(c);
+  }
+  return prof;
+}
 inline Front front(const std::vector<double>& rad, const std::vector<double>& rho, double rho0, int n) {
-  const extreme::Profile prof = extreme::radial_profile(rad, rho, 0.5, 2 * n);
+  const extreme::Profile prof = sliding_profile(rad, rho, n);
   if (prof.mean.empty()) return {std::nan(""), std::nan(""), std::nan(""), false};
   const auto peak = std::max_element(prof.mean.begin(), prof.mean.end()) - prof.mean.begin();
   const double fall = radial::falling_through(prof, 0.5 * (rho0 + prof.mean[peak]), prof.r[peak], -1.0);
@@ -74,7 +97,7 @@ inline Front front(const std::vector<double>& rad, const std::vector<double>& rh
 }
 
 // Fills r.errors, r.functionals, the profile figures and extras from the particles at time t
-// (positions relative to the blast centre); n: particles per side of the unit box (bins 0.25 / n);
+// (positions relative to the blast centre); n: particles per side of the unit box (the window 1 / n);
 // h: the particles' smoothing lengths (empty: the snapshot has none), whose kernel support is
 // support_per_h h (1 in sphv, whose h is the support, and for SWIFT files, whose reader
 // converts; 2 for SPH-EXA). K: the kernel the reference density is smoothed with, the run's.
@@ -101,7 +124,7 @@ void measure(Result& r, const std::vector<sph::Vec<D>>& x, const std::vector<sph
   r.extra["R_peak"] = f.r_peak;
   r.extra["rho_peak_binned"] = f.rho_peak;
   r.extra["rho_peak_exact"] = exact.g(1.0) * rho0;
-  r.extra["bin_width"] = 0.25 * dx;
+  r.extra["window_width"] = dx;  // slid in steps of dx / 4
   const auto densest = std::max_element(rho.begin(), rho.end()) - rho.begin();
   if (!rho.empty()) r.extra["R_densest"] = rad[densest];
   if (h.size() == x.size()) {

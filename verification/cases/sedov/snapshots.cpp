@@ -90,7 +90,7 @@ Result score_sedov(const Params& prm, const Snapshot& s) {
   if (r.extra["ball_particles"].get<double>() == 0.0)
     r.verdict = "no particle within 1.2 R of the centre: L1_rho is not a measurement (is the centre right?)";
   else if (!r.extra["front_found"].get<bool>())
-    r.verdict = "no shock front: the binned density never falls through (rho0 + peak) / 2 beyond its peak";
+    r.verdict = "no shock front: the radial density profile never falls through (rho0 + peak) / 2 beyond its peak";
   const double E = prm.real("E"), rho0 = prm.real("rho0"), t = prm.real("t"), R = exact.shock_radius(E, rho0, t);
   const auto support = problem_check::supports(s, who);
   const auto& rho = s.at("rho", who);
