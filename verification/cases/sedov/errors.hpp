@@ -17,9 +17,9 @@ namespace sphv::sedov {
 
 inline const std::map<std::string, std::string> error_defs = {
     {"shock_radius",
-     "|R_front - R_front(rho_h)| / R, R = xi_0 (E t^2 / rho0)^(1/(d+2)); R_front: where the mean density in a radial "
-     "window of width 1/n, sliding in steps of 0.25/n on [0, 0.5), falls, going outwards from its peak, through "
-     "(rho0 + peak) / 2 (linear between window centres); R_front(rho_h): the same estimator on the same bins applied to rho_h(r_i, h_i), the "
+     "|R_front - R_front(rho_h)| / R, R = xi_0 (E t^2 / rho0)^(1/(d+2)); R_front: where the particles' density averaged "
+     "with a tent weight of half-width 1/n around radii 0.25/n apart on [0, 0.5) falls, going outwards from its "
+     "peak, through (rho0 + peak) / 2 (linear between those radii); R_front(rho_h): the same estimator on the same bins applied to rho_h(r_i, h_i), the "
      "exact density convolved with the cubic spline at each particle's support h_i (the SPH estimate of the exact "
      "field). Not reported for a snapshot without h (extra shock_radius_halfrise: |R_front - R| / R)"},
     {"L1_rho", "sum over particles with r < 1.2 R of (m_i/rho_i) |rho_i - rho_exact(r_i, t)|, divided by the ball's "
@@ -53,43 +53,44 @@ inline double kinetic_share(const reference::Sedov& exact, int d) {
   return sigma * alpha * alpha * std::pow(exact.xi0(), d + 2) * sum / cells;
 }
 
-// The front of a radial density profile: the mean density over particles in a window one
-// spacing wide (1/n) that slides outwards in steps of a quarter spacing on [0, 0.5), and where
-// that profile falls, going outwards from its peak, through half-way between the ambient density
-// and the peak. A lattice's shells lie a fraction of a spacing apart, so a narrower bin holds a
-// few shells or none and its mean jumps when a shell crosses its edge; a window one spacing wide
-// always holds about one spacing's worth of shells, and a shell moving across a quarter-spacing
-// step changes the peak by a fraction of that shell's weight. The half-rise point of a
-// symmetrically smoothed step is the step; behind a blast the profile is a spike, and the level
-// is crossed outside R by a fraction of the kernel's support that does not depend on the code
-// (hence the comparison with rho_h below). found: the profile falls through the half level
-// beyond its peak (else r_front is the peak's); no particle within 0.5 of the centre (a scored
-// snapshot's centre off its blast): no profile, NaN.
+// The front of a radial density profile: the mean density of the particles weighted by a tent of
+// half-width one spacing (1/n) around each radius of a grid of quarter-spacing steps on [0, 0.5),
+// and where that profile falls, going outwards from its peak, through half-way between the
+// ambient density and the peak. A lattice's shells of equal-density particles lie a fraction of a
+// spacing apart; with a weight that is continuous in the radius, a shell that moves by a small
+// distance changes the profile by as little (a bin's edge, or a window's, would move the shell's
+// whole weight at once, and at n = 32 one shell of eight particles crossing an edge moves the
+// half-rise point by a tenth of a spacing). The half-rise point of a symmetrically smoothed step
+// is the step; behind a blast the profile is a spike, and the level is crossed outside R by a
+// fraction of the kernel's support that does not depend on the code (hence the comparison with
+// rho_h below). found: the profile falls through the half level beyond its peak (else r_front is
+// the peak's); no particle within 0.5 of the centre (a scored snapshot's centre off its blast):
+// no profile, NaN.
 struct Front {
   double r_front, r_peak, rho_peak;
   bool found;
 };
-inline extreme::Profile sliding_profile(const std::vector<double>& rad, const std::vector<double>& rho, int n) {
-  constexpr int steps = 4;  // quarter-spacing steps per window
-  const int bins = 2 * n;   // 0.5 / (0.25 / n)
-  const double dr = 0.5 / bins;
-  std::vector<double> sum(bins, 0.0);
-  std::vector<long> count(bins, 0);
+inline extreme::Profile tent_profile(const std::vector<double>& rad, const std::vector<double>& rho, int n) {
+  constexpr int steps = 4;       // grid points per spacing; the tent spans steps on either side
+  const int points = 2 * n;      // 0.5 / (0.25 / n)
+  const double dr = 0.5 / points;
+  std::vector<double> sum(points, 0.0), weight(points, 0.0);
   for (std::size_t i = 0; i < rad.size(); ++i) {
     const double q = rad[i] / dr;  // compared before the cast (NaN and huge q stay out)
-    if (q >= 0.0 && q < bins) sum[static_cast<int>(q)] += rho[i], ++count[static_cast<int>(q)];
+    if (!(q >= 0.0 && q < points + steps)) continue;
+    const int k = static_cast<int>(q);
+    for (int j = std::max(0, k - steps + 1); j <= std::min(points - 1, k + steps); ++j) {
+      const double w = 1.0 - std::abs(q - j) / steps;
+      if (w > 0.0) sum[j] += w * rho[i], weight[j] += w;
+    }
   }
   extreme::Profile prof;
-  for (int k = 0; k + steps <= bins; ++k) {
-    double s = 0.0;
-    long c = 0;
-    for (int j = k; j < k + steps; ++j) s += sum[j], c += count[j];
-    if (c > 0) prof.r.push_back((k + 0.5 * steps) * dr), prof.mean.push_back(s / c), prof.count.push_back(c);
-  }
+  for (int j = 0; j < points; ++j)
+    if (weight[j] > 0.0) prof.r.push_back(j * dr), prof.mean.push_back(sum[j] / weight[j]);
   return prof;
 }
 inline Front front(const std::vector<double>& rad, const std::vector<double>& rho, double rho0, int n) {
-  const extreme::Profile prof = sliding_profile(rad, rho, n);
+  const extreme::Profile prof = tent_profile(rad, rho, n);
   if (prof.mean.empty()) return {std::nan(""), std::nan(""), std::nan(""), false};
   const auto peak = std::max_element(prof.mean.begin(), prof.mean.end()) - prof.mean.begin();
   const double fall = radial::falling_through(prof, 0.5 * (rho0 + prof.mean[peak]), prof.r[peak], -1.0);
@@ -97,7 +98,7 @@ inline Front front(const std::vector<double>& rad, const std::vector<double>& rh
 }
 
 // Fills r.errors, r.functionals, the profile figures and extras from the particles at time t
-// (positions relative to the blast centre); n: particles per side of the unit box (the window 1 / n);
+// (positions relative to the blast centre); n: particles per side of the unit box (the tent 1 / n);
 // h: the particles' smoothing lengths (empty: the snapshot has none), whose kernel support is
 // support_per_h h (1 in sphv, whose h is the support, and for SWIFT files, whose reader
 // converts; 2 for SPH-EXA). K: the kernel the reference density is smoothed with, the run's.
@@ -124,7 +125,7 @@ void measure(Result& r, const std::vector<sph::Vec<D>>& x, const std::vector<sph
   r.extra["R_peak"] = f.r_peak;
   r.extra["rho_peak_binned"] = f.rho_peak;
   r.extra["rho_peak_exact"] = exact.g(1.0) * rho0;
-  r.extra["window_width"] = dx;  // slid in steps of dx / 4
+  r.extra["tent_half_width"] = dx;  // on radii dx / 4 apart
   const auto densest = std::max_element(rho.begin(), rho.end()) - rho.begin();
   if (!rho.empty()) r.extra["R_densest"] = rad[densest];
   if (h.size() == x.size()) {
