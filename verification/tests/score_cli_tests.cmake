@@ -233,10 +233,10 @@ set_tests_properties(score_swift_sod_from_file PROPERTIES PASS_REGULAR_EXPRESSIO
 add_test(NAME score_swift_sedov_from_file COMMAND sphv score sedov --snapshot ${_data}/swift_sedov3d_lattice32_t0.05.hdf5 --out ${_sdir}/swift_sedov)
 set_tests_properties(score_swift_sedov_from_file PROPERTIES PASS_REGULAR_EXPRESSION
   "centre=0.5,0.5,0.5 \\(file: the middle of its box \\(/Header BoxSize\\)\\).*n=32 \\(snapshot: N\\^\\(1/3\\).*L1_rho=2\\.61(6[5-9]|7[0-4])[0-9]*e-01.*verdict: ok")
-add_test(NAME score_swift_sedov_bin_width COMMAND bash -c
-  "$<TARGET_FILE:sphv> score sedov --snapshot ${_data}/swift_sedov3d_lattice32_t0.05.hdf5 --out swift_sedov_bw > /dev/null && grep -q '\"bin_width\": 0.0078125' swift_sedov_bw/result.json && grep -q '\"n\": 32' swift_sedov_bw/result.json && echo PASS"
+add_test(NAME score_swift_sedov_tent_width COMMAND bash -c
+  "$<TARGET_FILE:sphv> score sedov --snapshot ${_data}/swift_sedov3d_lattice32_t0.05.hdf5 --out swift_sedov_bw > /dev/null && grep -q '\"tent_half_width\": 0.03125' swift_sedov_bw/result.json && grep -q '\"n\": 32' swift_sedov_bw/result.json && echo PASS"
   WORKING_DIRECTORY ${_sdir})
-set_tests_properties(score_swift_sedov_bin_width PROPERTIES PASS_REGULAR_EXPRESSION "PASS")
+set_tests_properties(score_swift_sedov_tent_width PROPERTIES PASS_REGULAR_EXPRESSION "PASS")
 # SPH-EXA's H5Part: the centre from its step's box [-0.5, 0.5]^3, gamma from the step.
 add_test(NAME score_sphexa_from_file COMMAND sphv score sedov --snapshot ${_data}/sphexa-sedov-n12.h5 --out ${_sdir}/sphexa_file)
 set_tests_properties(score_sphexa_from_file PROPERTIES PASS_REGULAR_EXPRESSION
