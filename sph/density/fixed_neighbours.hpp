@@ -36,8 +36,10 @@ struct SmoothingLengthOutcome {
 // Sets h from (50) and rho from (27) consistently (to tol); rho is the summation density of the
 // returned h. One neighbour search serves the whole iteration while the h fit its padding
 // (search/verlet_list.hpp: the particles stand still), and `lists`, kept by a caller that iterates
-// after every step, serves the next calls while the particles stay within it. Throws
-// std::invalid_argument from the search if h exceeds half a periodic box. K: the kernel of (27).
+// again, serves the next calls while the particles stay within it. Throws std::invalid_argument
+// from the search if h exceeds half a periodic box. K: the kernel of (27). It sets h once (a run's
+// start, initial conditions); a scheme's density phase solves (50) per particle at every
+// evaluation (fixed_neighbours_newton.hpp).
 template <int D, class K = CubicSpline<D>>
 SmoothingLengthOutcome smoothing_length_iterate(Particles<D>& p, const Box<D>& box, const SmoothingLengthControl& c,
                                                 VerletList<D>& lists) {

@@ -254,6 +254,50 @@ void for_each_particle(std::size_t n, const NeighbourList& nl, Visit&& visit) {
   }
 }
 
+// visit(which[k]) for k < which.size(), in the copies of for_each_particle, the threads taking
+// stretches of equal length (Stretches). `which` lists a subset of the particles, in the lists'
+// visiting order for locality (the unconverged particles of an iteration). Each visit writes only
+// its particle's outputs, so the result is independent of the thread count.
+template <class Visit>
+[[gnu::flatten]] void listed_in_portable(std::size_t k0, std::size_t k1, const int* which, Visit& visit) {
+  for (std::size_t k = k0; k < k1; ++k) visit(static_cast<std::size_t>(which[k]));
+}
+#ifdef SPH_AVX2_COPY
+template <class Visit>
+[[gnu::flatten, gnu::target("avx2,fma")]] void listed_in_avx2(std::size_t k0, std::size_t k1, const int* which,
+                                                              Visit& visit) {
+  for (std::size_t k = k0; k < k1; ++k) visit(static_cast<std::size_t>(which[k]));
+}
+template <class Visit>
+[[gnu::flatten, gnu::target(SPH_AVX512_TARGET)]] void listed_in_avx512(std::size_t k0, std::size_t k1,
+                                                                      const int* which, Visit& visit) {
+  for (std::size_t k = k0; k < k1; ++k) visit(static_cast<std::size_t>(which[k]));
+}
+#endif
+template <int D, class Visit>
+void for_each_listed(const std::vector<int>& which, Visit&& visit) {
+  [[maybe_unused]] const IsaPath path = loop_path<D>(isa_path());
+  auto stretch = [&](std::size_t k0, std::size_t k1) {
+#ifdef SPH_AVX2_COPY
+    if constexpr (D == 3)
+      if (path == IsaPath::avx512) return listed_in_avx512(k0, k1, which.data(), visit);
+    if constexpr (D >= 2)
+      if (path == IsaPath::avx2) return listed_in_avx2(k0, k1, which.data(), visit);
+#endif
+    listed_in_portable(k0, k1, which.data(), visit);
+  };
+  const std::size_t n = which.size();
+  if (n < parallel_threshold) return stretch(0, n);
+  Stretches stretches;
+#pragma omp parallel
+  {
+    const int t = omp_get_thread_num();
+#pragma omp single
+    stretches.reset(n, omp_get_num_threads());
+    stretches.work(t, [&](std::size_t, std::size_t k0, std::size_t k1) { stretch(k0, k1); });
+  }
+}
+
 // The pair loop over every particle i (pairs_of), with the kernel K of grad W.
 template <int D, class Acc, class K = CubicSpline<D>, class F, class Store>
 void sum_over_pairs(const std::vector<Vec<D>>& x, const std::vector<double>& h, const NeighbourList& nl,

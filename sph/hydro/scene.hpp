@@ -12,11 +12,14 @@
 namespace sph {
 
 // Time derivatives the terms of a scene accumulate, and mu_max = max_j |mu_ij| (46) of the
-// artificial viscosity (0 without), which the Courant condition reads.
+// artificial viscosity (0 without), which the Courant condition reads. h_set: the evaluation sets h
+// (a density phase solving (50), schemes/chapter.hpp), and dhdt only predicts h for the next one
+// (time/leapfrog.hpp).
 template <int D>
 struct Derivatives {
   std::vector<Vec<D>> dvdt;
   std::vector<double> dudt, drhodt, dhdt, mu_max;
+  bool h_set = false;
   void reset(std::size_t n) {  // zeros written by all threads: megabytes in a large run
     for (auto* a : {&dudt, &drhodt, &dhdt, &mu_max}) a->resize(n);
     dvdt.resize(n);
@@ -70,11 +73,17 @@ constexpr Writes writes_of() {
   }
 }
 
-// The particles with the geometry their pair loops need.
+template <int D>
+class VerletList;
+
+// The particles with the geometry their pair loops need. lists: the reused lists `list` was
+// selected from (search/verlet_list.hpp), given by evolve: a density phase that sets h
+// (schemes/chapter.hpp) selects `list` from them anew for the h it sets (null: list is fixed).
 template <int D>
 struct Neighbourhood {
   const NeighbourList& list;
   const Box<D>& box;
+  VerletList<D>* lists = nullptr;
 };
 
 // A term that only caps the copies of its scene's pair loop the build compiles (core/isa.hpp), for

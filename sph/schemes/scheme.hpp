@@ -4,9 +4,9 @@
 // fields its loops write and the rates it returns (Derivatives), and its phases by the moment they
 // run, each a member function of that name:
 //   start(p, box)           once, before the first step (e.g. the initial smoothing lengths)
-//   density(p, nb)          the density loop, at every evaluation of the rates
+//   density(p, nb)          the density loop, at every evaluation of the rates (it may set h, and
+//                           then selects nb.list anew from nb.lists for the force loop)
 //   force(p, nb, d)         then the force loop: the rates d
-//   after_step(p, box)      after every step (optional)
 //   time_step(p, d, c)      the scheme's time-step rule at a state with its rates
 // and `static constexpr bool reorderable`: false when it keeps arrays over the particles
 // (HydroControls::reorder_every). A reader counts the neighbour loops of a step from the phases.
@@ -19,7 +19,7 @@
 namespace sph {
 
 // The options every scheme reads; a scheme rejects (std::invalid_argument) a choice it lacks.
-// hmode: how h is set (9.4.4): "iterate50", (50) iterated with the density after every step;
+// hmode: how h is set (9.4.4): "iterate50", (50) solved with the density in every density phase;
 // "rate53", h integrated by (53); "fixed", the initial h kept. energy: the energy form's equation.
 struct SchemeOptions {
   double gamma = 5.0 / 3.0;
@@ -41,33 +41,21 @@ concept HydroScheme = requires(S& s, Particles<S::dim>& p, const Box<S::dim>& bo
 };
 
 // Advances the particles by the scheme s to c.t_end: start, then for every evaluation of the rates
-// the density and the force phase, after every step the caller's constrain hook and s's after_step,
-// and s's time step. Ends with "ok", or with the first step and particle where the state went bad,
-// or with the step budget exhausted; never throws on a blow-up (a start that fails ends the run
-// with its verdict).
+// the density and the force phase, after every step the caller's constrain hook, and s's time
+// step. Ends with "ok", or with the first step and particle where the state went bad, or with the
+// step budget exhausted; never throws on a blow-up (a start that fails ends the run with its
+// verdict).
 template <HydroScheme S, int D = S::dim>
-HydroOutcome evolve(S& s, Particles<D>& p, const Box<D>& box, const HydroControls& c, HydroHooks<D> hooks = {}) {
+HydroOutcome evolve(S& s, Particles<D>& p, const Box<D>& box, const HydroControls& c, const HydroHooks<D>& hooks = {}) {
   try {
     s.start(p, box);
   } catch (const std::invalid_argument& e) {
     return {0, 0.0, std::string("unstable: ") + e.what()};
   }
-  if constexpr (requires { s.after_step(p, box); }) {
-    // A phase treats every particle alike: the run may reorder them unless the caller's hooks need
-    // its order.
-    if (hooks.none()) hooks.index_free = true;
-    auto user = hooks.constrain;
-    hooks.constrain = [user, &s, &box](Particles<D>& q, double t) {
-      if (user) user(q, t);
-      s.after_step(q, box);
-    };
-  }
-  auto rates = [&](Particles<D>& q, const Neighbourhood<D>& nb, Derivatives<D>& d) {
-    s.density(q, nb);
-    s.force(q, nb, d);
-  };
+  auto density = [&](Particles<D>& q, const Neighbourhood<D>& nb) { s.density(q, nb); };
+  auto force = [&](Particles<D>& q, const Neighbourhood<D>& nb, Derivatives<D>& d) { s.force(q, nb, d); };
   auto time_step = [&](const Particles<D>& q, const Derivatives<D>& d) { return s.time_step(q, d, c.step); };
-  return evolve_rates<D>(rates, time_step, p, box, c, hooks, S::reorderable);
+  return evolve_rates<D>(density, force, time_step, p, box, c, hooks, S::reorderable);
 }
 
 }  // namespace sph

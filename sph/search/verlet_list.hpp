@@ -1,5 +1,6 @@
 #pragma once
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -57,12 +58,29 @@ class VerletList {
   // The list holds exactly the pairs with |r_ij| < max(h_i, h_j) now, as a fresh search would (the
   // padded list filtered, in its order), so no pair loop of the evaluation visits the padding.
   const NeighbourList& update(const std::vector<Vec<D>>& x, const std::vector<double>& h, const Box<D>& box) {
-    if (!covers(x, h, box)) search(x, h, box);
-    select(x, h, box);
+    const auto t0 = std::chrono::steady_clock::now();
+    const std::vector<double>& r = radii(h);
+    if (!covers(x, r, box)) search(x, r, box);
+    select(x, r, box);
+    seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return active_;
   }
   long searches() const { return searches_; }
+  // The time spent in update so far (`sphv bench` shows it as the step's search phase).
+  double seconds() const { return seconds_; }
+  // The next update searches anew, whether or not the lists cover (a step timed with a fresh
+  // search at every evaluation).
+  void expire() { searches_at_expiry_ = searches_ + 1; }
 
+  // From the next update on, the pairs selected are those within (1 + margin) max(h_i, h_j) (and
+  // the lists are searched and kept for those radii): a caller that changes h by less than the
+  // margin between updates (a density phase solving (50)) keeps the pairs it has. The pair loops
+  // give such pairs no share (W and grad W vanish beyond h_ij), so their results are those of
+  // the exact pairs; they visit about D x margin more pairs in D dimensions.
+  void set_margin(double margin) { margin_ = margin; }
+  // Whether the last update's pairs hold every pair of particle i with |r_ij| < max(h_i, h_j) for
+  // an h_i now (the positions and the other radii as then): h_i within the radius selected.
+  bool holds(std::size_t i, double h) const { return h <= sites_[i].h; }
   // For a caller that stores its particles in the visiting order of the last search (evolve, see
   // hydro/storage_order.hpp): returns that order and renumbers the lists so that particle order[k]
   // becomes k. They are then the lists a search of the particles so stored would give (the same
@@ -88,8 +106,18 @@ class VerletList {
   }
 
  private:
+  // The radii searched and selected: h, or h padded by the margin.
+  const std::vector<double>& radii(const std::vector<double>& h) {
+    if (margin_ == 0.0) return h;
+    const std::size_t n = h.size();
+    padded_h_.resize(n);
+#pragma omp parallel for if (n >= parallel_threshold)
+    for (std::size_t k = 0; k < n; ++k) padded_h_[k] = (1.0 + margin_) * h[k];
+    return padded_h_;
+  }
+
   bool covers(const std::vector<Vec<D>>& x, const std::vector<double>& h, const Box<D>& box) const {
-    if (searches_ == 0 || x.size() != x0_.size() || box.lo != box_.lo || box.hi != box_.hi || box.periodic != box_.periodic) return false;
+    if (searches_ < searches_at_expiry_ || x.size() != x0_.size() || box.lo != box_.lo || box.hi != box_.hi || box.periodic != box_.periodic) return false;
     const Vec<D> L = box.length(), wrap = box.wrap_factor();
     const double s = used_skin_;
     bool each = true, finite = true;
@@ -206,6 +234,10 @@ class VerletList {
   std::vector<double> h0_;
   Box<D> box_;
   long searches_ = 0;
+  long searches_at_expiry_ = 1;  // the lists serve once searches_ reaches it (expire)
+  double seconds_ = 0.0;
+  double margin_ = 0.0;
+  std::vector<double> padded_h_;  // the radii with the margin
 };
 
 }  // namespace sph

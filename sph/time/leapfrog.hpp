@@ -11,15 +11,15 @@ namespace sph {
 // change only where a scene term writes drhodt or dhdt). `derivs(p, d)` evaluates the scene at
 // the current state. On entry d holds the derivatives at t; on exit, those at t + dt.
 
-// Advances y += s * dy for the evolved scalars.
+// Advances y += s * dy for the evolved scalars (h too unless `h` is false).
 template <int D>
-void kick_scalars(Particles<D>& p, const Derivatives<D>& d, double s) {
+void kick_scalars(Particles<D>& p, const Derivatives<D>& d, double s, bool h = true) {
   const std::size_t n = p.size();
 #pragma omp parallel for if (n >= parallel_threshold)
   for (std::size_t i = 0; i < n; ++i) {
     p.u[i] += s * d.dudt[i];
     p.rho[i] += s * d.drhodt[i];
-    p.h[i] += s * d.dhdt[i];
+    if (h) p.h[i] += s * d.dhdt[i];
   }
 }
 
@@ -70,11 +70,12 @@ void kdk_leapfrog_step(Particles<D>& p, Derivatives<D>& d, Derivatives<D>& at_t,
   kick_scalars(p, at_t, 0.5 * dt);   // predicted scalars at t + dt
   derivs(p, d);                      // rates at t + dt (may overwrite derived scalars, e.g. rho (27))
   // Correct the prediction: y(t + dt) = y(t + dt/2) + dt/2 rate(t + dt). Written as a change of
-  // the predicted value so that scalars a scene term sets directly keep the value it set.
+  // the predicted value so that scalars a scene term sets directly keep the value it set; an h the
+  // evaluation set (Derivatives::h_set) is kept, its rate having served as the prediction.
 #pragma omp parallel for if (n >= parallel_threshold)
   for (std::size_t i = 0; i < n; ++i) p.v[i] += 0.5 * dt * (d.dvdt[i] - at_t.dvdt[i]);
-  kick_scalars(p, at_t, -0.5 * dt);
-  kick_scalars(p, d, 0.5 * dt);
+  kick_scalars(p, at_t, -0.5 * dt, !d.h_set);
+  kick_scalars(p, d, 0.5 * dt, !d.h_set);
 }
 
 }  // namespace sph

@@ -109,11 +109,28 @@ std::vector<Row> measure(long n_wanted, const BenchOptions& o, double& bytes_per
   const HydroTimes hydro = time_hydro_step(o.scheme, p, box, timer);
   add("hydro forces", hydro.forces, hydro.pairs);
   add("full hydro step", hydro.step, hydro.pairs);
+  // Its phases (sph::StepPhases), on each thread count, then their sum, which the step's time checks.
+  const std::vector<std::pair<std::string, double sph::StepPhases::*>> phases = {
+      {"search or list reuse", &sph::StepPhases::search},
+      {"density loop with its h", &sph::StepPhases::density},
+      {"force loop", &sph::StepPhases::forces},
+      {"time step", &sph::StepPhases::time_step},
+      {"reorder", &sph::StepPhases::reorder},
+      {"kick/drift", &sph::StepPhases::kick_drift},
+      {"state check and hooks", &sph::StepPhases::check}};
+  for (const auto& [name, member] : phases) {
+    Times t;
+    for (int threads : o.threads) t.push_back(hydro.phases.at(threads).*member);
+    add("  step phase: " + name, t, 0.0);
+  }
+  Times sum;
+  for (int threads : o.threads) sum.push_back(hydro.phases.at(threads).total());
+  add("  step phases summed", sum, 0.0);
   add("full hydro step, search every step", hydro.step_fresh_search, hydro.pairs);
   if (n <= o.shuffled_max) {  // particles stored in no spatial order, as another code's snapshot may hold them
     const sph::Particles<3> q = shuffled(p);
-    add("full hydro step, stored shuffled", time_evolve_step(o.scheme, q, box, timer).first, hydro.pairs);
-    add("full hydro step, stored shuffled, no reordering", time_evolve_step(o.scheme, q, box, timer, 0).first, hydro.pairs);
+    add("full hydro step, stored shuffled", time_evolve_step(o.scheme, q, box, timer).step, hydro.pairs);
+    add("full hydro step, stored shuffled, no reordering", time_evolve_step(o.scheme, q, box, timer, 0).step, hydro.pairs);
   }
   searches_per_step = hydro.searches_per_step;
   bytes_per_particle = hydro.bytes_per_particle;
@@ -191,6 +208,12 @@ void bench(const BenchOptions& o) {
       std::printf("\n");
       std::fflush(stdout);
     }
+    for (const Row& r : measured)  // the phases' sum against the step they divide
+      if (r.stage == "  step phases summed")
+        for (const Row& step : measured)
+          if (step.stage == "full hydro step" && step.threads == r.threads)
+            std::printf("step phases on %d thread(s) sum to %.1f %% of the full hydro step\n", r.threads,
+                        100.0 * r.seconds / step.seconds);
     bytes[rows.back().n] = b;
     searches_per_step[rows.back().n] = searches;
     // Measured: the process's peak over ascending N is set by the largest N so far (recorded after
@@ -211,7 +234,7 @@ void bench(const BenchOptions& o) {
   const int tmax = *std::max_element(o.threads.begin(), o.threads.end());
   std::map<std::string, Series> cost;
   for (const Row& r : rows)
-    if (r.threads == tmax) {
+    if (r.threads == tmax && !r.stage.starts_with("  step phase")) {
       cost[r.stage].x.push_back(r.n);
       cost[r.stage].y.push_back(r.seconds);
     }

@@ -2,17 +2,20 @@
 // The hydro part of `sphv bench`, for the scheme named (sph/schemes/; the chapter's by default, the
 // one the blast cases verify), with its default forms: its force loop, and a full kick-drift-kick
 // step: `evolve`'s own (the scheme's phases and time step, neighbour lists reused while they cover,
-// sph/hydro/evolve.hpp), and with a fresh search every step; and evolve's step from the particles
-// stored in a random order, with and without its reordering of them (sph/hydro/storage_order.hpp).
+// sph/hydro/evolve.hpp) with its phases, and with a fresh search every step; and evolve's step from
+// the particles stored in a random order, with and without its reordering of them
+// (sph/hydro/storage_order.hpp).
 #include <algorithm>
 #include <chrono>
 #include <functional>
+#include <map>
 #include <numeric>
 #include <random>
 #include <stdexcept>
-#include <tuple>
 #include <utility>
 #include <vector>
+
+#include <omp.h>
 
 #include "sph/core/verdict.hpp"
 #include "sph/density/summation.hpp"
@@ -52,8 +55,13 @@ inline std::function<Parts()> whole(std::function<void()> f) {
   };
 }
 
+// The full step's phases (sph::StepPhases) on each thread count timed, by count: each phase of each
+// step at its least over the runs, summed over the window and divided by it, as the step is.
+using PhaseTimes = std::map<int, sph::StepPhases>;
+
 struct HydroTimes {
   Times forces, step, step_fresh_search;
+  PhaseTimes phases;
   double pairs, bytes_per_particle, searches_per_step;
 };
 
@@ -81,11 +89,17 @@ void with_bench_scheme(const std::string& scheme, F&& f) {
 // was slow throughout (two cores' FMA peak 1.83x one's; a canary 10-40 % slow after); 1.80-1.97x in
 // a driver's quiet minutes.
 // The runs are timed after an untimed one that pays the process's first touch of the buffers (a
-// cold first run took 1.03 s against 0.52 s warm at N = 125,000 on one thread). Returns the step's
-// time and the searches a step.
-inline std::pair<Times, double> time_evolve_step(const std::string& scheme, const sph::Particles<3>& p,
-                                                 const sph::Box<3>& box, const Timer& timer,
-                                                 long reorder_every = sph::HydroControls{}.reorder_every) {
+// cold first run took 1.03 s against 0.52 s warm at N = 125,000 on one thread). Each step's phases
+// are timed by evolve's `timed` hook and taken likewise, each at its least over the runs (so their
+// sum may fall a little short of the step's). Returns the step's time and the searches a step, and
+// the phases if asked for.
+struct EvolveStepTimes {
+  Times step;
+  double searches_per_step;
+  PhaseTimes phases;
+};
+inline EvolveStepTimes time_evolve_step(const std::string& scheme, const sph::Particles<3>& p, const sph::Box<3>& box,
+                                        const Timer& timer, long reorder_every = sph::HydroControls{}.reorder_every) {
   using namespace sph;
   using Clock = std::chrono::steady_clock;
   HydroControls run;
@@ -103,21 +117,44 @@ inline std::pair<Times, double> time_evolve_step(const std::string& scheme, cons
   };
   const long at_start = evolve_for(1, {});  // untimed; the searches of the first step
   long searches = 0;  // the same in every run
+  std::map<int, std::vector<StepPhases>> least;  // by thread count: each step's phases at their least
   const Times t = timer([&] {
     std::vector<Clock::time_point> stepped;
+    std::vector<StepPhases> phases;
     stepped.reserve(1 + full_step_window);
+    phases.reserve(1 + full_step_window);
     HydroHooks<3> clock;
     clock.stepped = [&](const Particles<3>&, const Derivatives<3>&, long, double) { stepped.push_back(Clock::now()); };
+    clock.timed = [&](const StepPhases& ph) { phases.push_back(ph); };
     clock.index_free = true;
     searches = evolve_for(1 + full_step_window, clock);
     Parts steps(full_step_window);
     for (long k = 0; k < full_step_window; ++k)
       steps[k] = std::chrono::duration<double>(stepped[k + 1] - stepped[k]).count();
+    // Step k + 1's phases are those of the time between stepped[k] and stepped[k + 1].
+    auto [at, fresh] = least.try_emplace(omp_get_max_threads(), phases.begin() + 1, phases.end());
+    if (!fresh)
+      for (long k = 0; k < full_step_window; ++k) {
+        StepPhases& a = at->second[k];
+        const StepPhases& b = phases[k + 1];
+        a = {std::min(a.search, b.search),         std::min(a.density, b.density), std::min(a.forces, b.forces),
+             std::min(a.time_step, b.time_step),   std::min(a.reorder, b.reorder), std::min(a.kick_drift, b.kick_drift),
+             std::min(a.check, b.check)};
+      }
     return steps;
   });
-  Times per_step(t.size());
-  for (std::size_t k = 0; k < per_step.size(); ++k) per_step[k] = t[k] / full_step_window;
-  return {per_step, static_cast<double>(searches - at_start) / full_step_window};
+  EvolveStepTimes out{Times(t.size()), static_cast<double>(searches - at_start) / full_step_window, {}};
+  for (std::size_t k = 0; k < t.size(); ++k) out.step[k] = t[k] / full_step_window;
+  for (const auto& [threads, steps] : least) {
+    StepPhases& sum = out.phases[threads];
+    for (const StepPhases& ph : steps) {
+      sum.search += ph.search / full_step_window, sum.density += ph.density / full_step_window;
+      sum.forces += ph.forces / full_step_window, sum.time_step += ph.time_step / full_step_window;
+      sum.reorder += ph.reorder / full_step_window, sum.kick_drift += ph.kick_drift / full_step_window;
+      sum.check += ph.check / full_step_window;
+    }
+  }
+  return out;
 }
 
 // The particles of p stored in a random order, as a snapshot of another code may hold them.
@@ -150,21 +187,21 @@ inline HydroTimes time_hydro_step(const std::string& scheme, sph::Particles<3>& 
   t.pairs = static_cast<double>(nl.pairs());
   with_bench_scheme(scheme, [&](auto& s) {
     t.forces = timer(whole([&] { s.force(p, Neighbourhood<3>{nl, box}, d); }));
-    // The scheme's step, its rates on lists searched afresh at every evaluation.
-    GridSearchBuffers<3> buffers;  // kept, as evolve's lists keep theirs: fresh ones fault pages in every step
+    // The scheme's step, its rates on lists searched afresh at every evaluation (with evolve's skin,
+    // within which a density phase may set h), their buffers kept as evolve's are: fresh ones fault
+    // pages in every step.
+    VerletList<3> fresh(HydroControls{}.skin);
     auto derivs = [&](Particles<3>& q, Derivatives<3>& dd) {
-      grid_search<3>(q.x, q.h, box, nl, buffers);
-      const Neighbourhood<3> nb{nl, box};
+      fresh.expire();
+      const Neighbourhood<3> nb{fresh.update(q.x, q.h, box), box, &fresh};
       s.density(q, nb);
       s.force(q, nb, dd);
     };
     derivs(p, d);
-    t.step_fresh_search = timer(whole([&] {
-      kdk_leapfrog_step(p, d, at_t, 1e-4, derivs);
-      if constexpr (requires { s.after_step(p, box); }) s.after_step(p, box);
-    }));
+    t.step_fresh_search = timer(whole([&] { kdk_leapfrog_step(p, d, at_t, 1e-4, derivs); }));
   });
-  std::tie(t.step, t.searches_per_step) = time_evolve_step(scheme, p, box, timer);
+  EvolveStepTimes e = time_evolve_step(scheme, p, box, timer);
+  t.step = e.step, t.searches_per_step = e.searches_per_step, t.phases = std::move(e.phases);
   // Particle state (x, v: 6 doubles; m, rho, p, c, u, h: 6), derivatives (dv/dt: 3; du/dt,
   // drho/dt, dh/dt, mu_max: 4) and the KDK step's scratch of them, the rates' neighbour list (one
   // int per pair, an offset and a place in the visiting order per particle).

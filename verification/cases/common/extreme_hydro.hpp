@@ -23,7 +23,7 @@
 namespace sphv::extreme {
 
 // The scheme by name (sph/schemes/schemes.hpp) with its options (sph::SchemeOptions: hmode
-// "iterate50" sets h by (50) iterated with the density after every step, "rate53" integrates
+// "iterate50" sets h by (50) solved with the density at every evaluation, "rate53" integrates
 // (53), "fixed" keeps the initial h), and the run's controls.
 struct Method : sph::SchemeOptions {
   std::string scheme = sph::default_scheme();
