@@ -11,9 +11,8 @@
 // 2.5e-7, is below a tenth of every level's L1_v (a gate at each level). validate refuses an A
 // whose estimate exceeds 1 % of the amplitude at t_end.
 //
-// Smoothing length fixed (hmode=fixed) at the (50) value of the initial state: the iteration of
-// (50) after every step stops at a relative change of 1e-3 in h, a density noise ~1e-3 far above
-// the wave. Courant number C = 0.1: at the hydro cases' 0.3 the leapfrog's phase error cancels
+// Smoothing length fixed (hmode=fixed) at the (50) value of the initial state: the solve of (50)
+// in every density phase stops once h fits it to 1e-3, a density noise ~1e-3 far above the wave. Courant number C = 0.1: at the hydro cases' 0.3 the leapfrog's phase error cancels
 // most of the kernel's in 1D, and an order measured on a cancellation is not the scheme's; at 0.1
 // the spatial error dominates.
 //
