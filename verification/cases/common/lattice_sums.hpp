@@ -15,28 +15,11 @@ struct LatticeSums {
   double S1_across = 0.0;  // the momentum flux across the first axis (equal to S1 on a cubic lattice)
 };
 
-template <int D, class K = sph::CubicSpline<D>>
-LatticeSums lattice_sums(double h) {
-  LatticeSums s;
-  const int k = static_cast<int>(std::ceil(h));
-  int j[3] = {0, 0, 0};
-  const int count = static_cast<int>(std::pow(2 * k + 1, D));
-  for (int idx = 0; idx < count; ++idx) {
-    int rest = idx;
-    double r2 = 0.0;
-    for (int d = 0; d < D; ++d) j[d] = rest % (2 * k + 1) - k, rest /= 2 * k + 1, r2 += double(j[d]) * j[d];
-    const double r = std::sqrt(r2);
-    s.S0 += K::W(r, h);
-    s.S1 -= r * K::dWdr(r, h) / D;
-  }
-  s.S1_across = s.S1;
-  return s;
-}
-
-// The same sums on a lattice compressed c times along its first axis (spacing 1/c there, 1
-// across, as behind a planar shock that compressed a cubic lattice), with h from (50) at that
-// lattice's density: h = hfact c^(-1/D). S1 is the flux along the first axis, S1_across that
-// across it; each is 1 in the continuum.
+// The sums on a lattice compressed c times along its first axis (spacing 1/c there, 1 across, as
+// behind a planar shock that compressed a cubic lattice), with h from (50) at that lattice's
+// density: h = hfact c^(-1/D). S1 is the flux along the first axis, S1_across that across it;
+// each is 1 in the continuum (on the cubic lattice, c = 1, the two are equal and S1 is the first
+// moment above).
 template <int D, class K = sph::CubicSpline<D>>
 LatticeSums compressed_lattice_sums(double hfact, double c) {
   LatticeSums s;
@@ -62,6 +45,12 @@ LatticeSums compressed_lattice_sums(double hfact, double c) {
     }
   }
   return s;
+}
+
+// The sums on the cubic lattice of unit spacing at support radius h (= h/dx).
+template <int D, class K = sph::CubicSpline<D>>
+LatticeSums lattice_sums(double h) {
+  return compressed_lattice_sums<D, K>(h, 1.0);
 }
 
 }  // namespace sphv

@@ -168,13 +168,16 @@ Result run(const Params& p) {
              {"energy_rate", run.energy_rate},
              {"mass_drift", run.mass_drift},
              {"conservation_note", "active particles only; the boundary layers exert the end pressures"}};
-  LatticeSums sums;
-  sph::with_kernel<D>(p.text("kernel"), [&](auto k) { sums = lattice_sums<D, decltype(k)>(p.real("hfact")); });
+  // The run's kernel's sums, on the initial lattice and (D > 1) on the one the shock compresses.
+  LatticeSums sums, lc;
+  const double c = D > 1 ? shock_compression(p) : 1.0;
+  sph::with_kernel<D>(p.text("kernel"), [&](auto k) {
+    sums = lattice_sums<D, decltype(k)>(p.real("hfact"));
+    lc = compressed_lattice_sums<D, decltype(k)>(p.real("hfact"), c);
+  });
   r.extra["lattice_S0_minus_1"] = sums.S0 - 1.0;
   r.extra["lattice_S1_minus_1"] = sums.S1 - 1.0;
   if constexpr (D > 1) {
-    const double c = shock_compression(p);
-    const LatticeSums lc = compressed_lattice_sums<D>(p.real("hfact"), c);
     r.extra["shock_compression"] = c;
     r.extra["compressed_lattice_S1_across_minus_1"] = lc.S1_across - 1.0;
   }
