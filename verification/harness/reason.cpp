@@ -48,11 +48,17 @@ std::string fill_reason(const std::string& why, const Sweep& s) {
       if (o == s.observed_order.end()) return "-";
       return figure_of(o->second.p) + (std::isfinite(o->second.se) ? " +- " + figure_of(o->second.se) : "");
     }
-    if (key.rfind("extra.", 0) == 0)
-      return per_level([&](const Result& r) {
+    if (key.rfind("extra.", 0) == 0) {
+      // A setting's consequence (a lattice sum at fixed hfact) is one number at every level:
+      // printed once, so the reader sees that it does not change with n.
+      auto value = [&](const Result& r) {
         const auto it = r.extra.find(key.substr(6));
         return it != r.extra.end() && it->is_number() ? it->get<double>() : std::nan("");
-      });
+      };
+      bool same = s.runs.size() > 1;
+      for (const Result& r : s.runs) same = same && figure_of(value(r)) == figure_of(value(s.runs.front()));
+      return same ? figure_of(value(s.runs.front())) + " at every level" : per_level(value);
+    }
     for (const Result& r : s.runs)
       if (r.errors.count(key))
         return per_level([&](const Result& q) { return q.errors.count(key) ? q.errors.at(key) : std::nan(""); });

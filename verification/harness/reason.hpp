@@ -4,7 +4,8 @@
 // a number measured on another variant, at other levels or by an older build.
 //   {levels}        "n = 200, 400, 800"
 //   {NAME}          the error NAME at every level, four digits, e.g. "0.0132, 0.0133, 0.0133"
-//   {extra.KEY}     the run's extra KEY (a number) at every level
+//   {extra.KEY}     the run's extra KEY (a number) at every level, or once with "at every level"
+//                   where the four digits agree at every level
 //   {order.NAME}    the observed order of NAME with its standard error, e.g. "0.02 +- 0.01"
 // A value a run lacks prints as "-"; an unknown placeholder stays as written, so a test finds it.
 #include <string>

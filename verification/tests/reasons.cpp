@@ -87,6 +87,11 @@ TEST_CASE("fill_reason quotes the sweep's own runs", "[reasons]") {
   const sphv::Sweep s = sphv::summarise(sphv::find_case("noh"), {}, {100, 200}, noh_runs(0.0132, 0.0133));
   CHECK(sphv::fill_reason("{rho_post} at {levels}; {extra.rho_post_measured}; {order.rho_post}; {nothing}", s) ==
         "0.0132, 0.0133 at n = 100, 200; 3.91, 3.92; -0.01089; {nothing}");
+  // An extra that is the same at every level (a lattice sum at fixed hfact) is quoted once.
+  sphv::Sweep same = s;
+  for (auto& r : same.runs) r.extra["lattice_S0_minus_1"] = -2.427e-4;
+  CHECK(sphv::fill_reason("off by {extra.lattice_S0_minus_1} at {levels}", same) ==
+        "off by -0.0002427 at every level at n = 100, 200");
   CHECK(sphv::describe_reason("{rho_post} at {levels}") == "<rho_post at each level> at <the levels>");
 }
 
