@@ -1,4 +1,5 @@
 #pragma once
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -82,6 +83,16 @@ struct OrderClaim {
   bool unbounded = false;
   bool claimed() const { return std::isfinite(expected); }
   bool known_failure() const { return !experiment.empty(); }
+  // The experiment's settings, "k=v,k=v" split at its commas (Case::parse reads them).
+  std::vector<std::string> experiment_settings() const {
+    std::vector<std::string> settings;
+    for (std::size_t from = 0; from <= experiment.size();) {
+      const std::size_t comma = std::min(experiment.find(',', from), experiment.size());
+      settings.push_back(experiment.substr(from, comma - from));
+      from = comma + 1;
+    }
+    return settings;
+  }
   double lo() const { return at_least ? expected : expected - band; }
   double hi() const { return at_least ? std::numeric_limits<double>::infinity() : expected + band; }
   double max_se() const { return at_least ? max_se_at_least : band / 2.0; }

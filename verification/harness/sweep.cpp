@@ -379,15 +379,9 @@ void check_experiments(std::vector<Sweep>& sweeps) {
     for (Row& row : s.rows) {
       const auto claim = s.claims.find(row.error);
       if (row.outcome != "known failure" || claim == s.claims.end()) continue;
-      std::vector<std::string> settings;
-      for (std::size_t from = 0; from <= claim->second.experiment.size();) {
-        const std::size_t comma = std::min(claim->second.experiment.find(',', from), claim->second.experiment.size());
-        settings.push_back(claim->second.experiment.substr(from, comma - from));
-        from = comma + 1;
-      }
       // The experiment as its variant is named (defaults dropped), for a case of the catalogue.
-      const std::string variant =
-          c ? Sweep{.settings = c->parse(settings).non_defaults()}.variant() : claim->second.experiment;
+      const std::string variant = c ? Sweep{.settings = c->parse(claim->second.experiment_settings()).non_defaults()}.variant()
+                                    : claim->second.experiment;
       const auto exp = std::find_if(sweeps.begin(), sweeps.end(), [&](const Sweep& x) {
         return x.case_name == s.case_name && x.variant() == variant;
       });

@@ -65,13 +65,7 @@ TEST_CASE("a known failure names a catalogue variant of its case that claims the
     if (!claim.known_failure()) return;
     ++known;
     INFO(c.name << " " << error << ": experiment [" << claim.experiment << "]");
-    std::vector<std::string> experiment;
-    for (std::size_t from = 0; from <= claim.experiment.size();) {
-      const std::size_t comma = std::min(claim.experiment.find(',', from), claim.experiment.size());
-      experiment.push_back(claim.experiment.substr(from, comma - from));
-      from = comma + 1;
-    }
-    const auto settings = c.parse(experiment).non_defaults();
+    const auto settings = c.parse(claim.experiment_settings()).non_defaults();
     const auto v = std::find_if(c.variants.begin(), c.variants.end(),
                                 [&](const auto& w) { return c.parse(w).non_defaults() == settings; });
     REQUIRE(v != c.variants.end());
