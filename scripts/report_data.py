@@ -89,14 +89,19 @@ def expected_text(row):
     return text + f" [{lo:.3g}, {hi:.3g}]" if num(lo) and num(hi) else text
 
 
+def one_sided(row):
+    """A one-sided claim ("at least p"): its window has a lower edge and no upper one."""
+    window = list(row.get("window") or []) + [None, None]
+    return num(window[0]) and not num(window[1])
+
+
 def claim_tex(row, missing):
     """The claim in LaTeX: "$1 \\pm 0.3$", or "$\\geq 0.74$" for a one-sided claim (its window has no
     upper edge); `missing` where no order is claimed."""
     if not num(row.get("expected")):
         return missing
-    window = list(row.get("window") or []) + [None, None]
-    if num(window[0]) and not num(window[1]):
-        return f"$\\geq {window[0]:.3g}$"
+    if one_sided(row):
+        return f"$\\geq {row['window'][0]:.3g}$"
     return f"${row['expected']:.3g} \\pm {row.get('band', 0):.3g}$"
 
 

@@ -19,8 +19,8 @@ from pathlib import Path
 import report_bib
 import report_kernels
 import report_paper
-from report_data import (claim_notes, claim_tex, f2, file_of, fmt, is_dirty, num, provenances, row_note, slug,
-                         sweep_wide_failures, threads_text)
+from report_data import (claim_notes, claim_tex, f2, file_of, fmt, is_dirty, num, one_sided, provenances, row_note,
+                         slug, sweep_wide_failures, threads_text)
 from report_math import error_name, latex, prose
 
 FAIL = r"\textbf{FAIL}"
@@ -107,7 +107,12 @@ def convergence_caption(case, s, row):
             + (f", {tex(defs[row['error']])}" if row["error"] in defs else "")
             + f", against $n$ ({tex(s.get('n_counts', ''))}) at $n = {lv[0]}$ to ${lv[-1]}$ ({len(lv)} levels): "
             f"{tex(s.get('summary', ''))}. Observed order {order_tex(row)} (least-squares fit, solid), expected "
-            f"{expected_tex(row)} (dashed, through the finest point; band shaded); {outcome_tex(row)}.")
+            f"{expected_tex(row)} (dashed, through the finest point{band_words(row)}); {outcome_tex(row)}.")
+
+
+def band_words(row):
+    """The figure shades a two-sided claim's band; a one-sided claim has none to shade."""
+    return "" if one_sided(row) else "; band shaded"
 
 
 def run_caption(case, s, name):
