@@ -183,14 +183,17 @@ class FixedNeighboursNewton {
       if (lo >= h * (1.0 - c.tol)) lo = 0.0;
     }
     // (50)'s fixed point lies on the side f points to (above h for f < 0), so with an open bracket
-    // (hi infinite) one of the first two is inside and the midpoint is taken only between two bounds.
+    // (hi infinite) one of the first two is inside and the midpoint is taken only between two bounds;
+    // unless f is round-off, and Newton's step and the fixed point both round to h itself: h is then
+    // the root as closely as it can be represented, and stays (the midpoint of an open bracket would
+    // be infinite).
     auto inside = [&](double x) { return x > lo && x < hi; };
     const double fixed = c.hfact * std::pow(p.m[i] / rho, 1.0 / D);  // (50)
     off_[i] = std::abs(fixed - h) / h;
     double h_new = h;
     if (f != 0.0) {
       const double newton = h - f / fp;
-      h_new = fp > 0.0 && inside(newton) ? newton : inside(fixed) ? fixed : 0.5 * (lo + hi);
+      h_new = fp > 0.0 && inside(newton) ? newton : inside(fixed) ? fixed : newton == h ? h : 0.5 * (lo + hi);
     }
     next_[i] = h_new < c.h_max ? h_new : c.h_max;
   }
