@@ -172,7 +172,8 @@ TEST_CASE("gradh_switches: div v and curl v equal a direct sum over all pairs", 
 // whose h is kept has its residual below that), and Omega_i equals 1 + h_i/(D rho_i) d rho_i/d h_i
 // with the derivative a central difference of the direct sum in h_i at step 1e-4 h_i (truncation
 // ~ (1e-4)^2 of the second derivative's scale, round-off 1e-16 / 1e-4: bound 1e-7).
-TEST_CASE("gradh_switches: the density phase gives rho of its own h, h by (50), and Omega", "[schemes][gradh]") {
+TEST_CASE("gradh_switches: the density phase's rho, (50) and Omega equal a direct sum and its difference in h",
+          "[schemes][gradh]") {
   const auto box = sph::unit_box<D>(true);
   sph::Particles<D> p = uneven_gas(13);
   sph::SchemeOptions o;
@@ -205,7 +206,8 @@ TEST_CASE("gradh_switches: the density phase gives rho of its own h, h by (50), 
 // div v falling by 100 in a step without curl (alpha rises at once to alpha_loc = h^2 A / (c^2 +
 // h^2 A), A = 100 / 0.5); the same fall with |curl v| = 3 |div v| (xi = 1/10: alpha_loc from A/10,
 // below alpha, which decays towards it). Equal to round-off (1e-14 relative).
-TEST_CASE("gradh_switches: the viscosity switch rises at once and decays over tau", "[schemes][gradh]") {
+TEST_CASE("gradh_switches: the viscosity switch rises at once and decays over tau, as its formulas by hand",
+          "[schemes][gradh]") {
   sph::Particles<D> p;
   p.resize(1);
   const double h = 0.1, c = 1.0, l = 0.1, dt = 0.5, tau = h / (2.0 * l * c);
