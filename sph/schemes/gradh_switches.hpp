@@ -94,6 +94,8 @@ class GradhSwitches {
 
   // Force loop: p and c by (35), then dv/dt, du/dt, max_j v_sig,ij and (53)'s prediction of h.
   void force(Particles<D>& p, const Neighbourhood<D>& nb, Derivatives<D>& d) {
+    if (omega_.size() != p.size() || switch_.alpha.size() != p.size())
+      throw std::logic_error("scheme gradh_switches: the force loop reads Omega and alpha of its start and density phase");
     forces_.derivatives(p, nb, d);
     d.h_set = true;
   }
