@@ -46,7 +46,14 @@ namespace sph {
 // so that an h that changes by less keeps them; where one changes by more, the lists are updated
 // for the new h (a new search where it leaves their padding). The force loop then visits the
 // same pairs.
-template <int D, class K = CubicSpline<D>>
+//
+// own_h: the density of a grad-h scheme (schemes/gradh_switches.hpp), rho_i = sum_j m_j W(r_ij, h_i)
+// with i's own h in every pair (Springel & Hernquist 2002; Price & Monaghan 2007). Then rho_i
+// depends on h_i alone, d rho_i / d h_i = sum_j m_j dW/dh(r_ij, h_i) is f_i' exactly (the Newton
+// iteration converges quadratically, particle by particle), and a changed h_i leaves the
+// neighbours' rho as it was: only the changed particles are evaluated again. drho_dh() returns
+// that derivative at the h returned, from which the scheme forms Omega_i.
+template <int D, class K = CubicSpline<D>, bool own_h = false>
 class FixedNeighboursNewton {
  public:
   struct Outcome {
@@ -124,6 +131,10 @@ class FixedNeighboursNewton {
     return out;
   }
 
+  // d rho_i / d h_i at the h returned (with own_h: sum_j m_j dW/dh(r_ij, h_i), the self term
+  // included), each evaluated at the h and positions of i's last evaluation.
+  const std::vector<double>& drho_dh() const { return drho_; }
+
  private:
   // rho_i (27) and d rho_i / d h_i over i's pairs js[0 .. count): every pair evaluated without a
   // branch (W and dW/dr vanish beyond h_ij), in vectorised batches, each summed in list order.
@@ -139,10 +150,10 @@ class FixedNeighboursNewton {
 #pragma omp simd
       for (int t = 0; t < nb; ++t) {
         const int j = js[t0 + t];
-        const double r = std::sqrt(distance2<D>(i, j, xs_, L, wrap)), hij = h_ij(hi, h[j]);
+        const double r = std::sqrt(distance2<D>(i, j, xs_, L, wrap)), hij = own_h ? hi : h_ij(hi, h[j]);
         const double W = K::W(r, hij);
         w[t] = m[j] * W;
-        dw[t] = -m[j] * (D * W + r * K::dWdr(r, hij)) / hij;  // dW/dh_ij, h_i and h_j changing alike
+        dw[t] = -m[j] * (D * W + r * K::dWdr(r, hij)) / hij;  // dW/dh_ij (h_i and h_j changing alike, or h_i's own)
       }
       for (int t = 0; t < nb; ++t) rho += w[t], drho += dw[t];
     }
@@ -151,19 +162,25 @@ class FixedNeighboursNewton {
     drho_[i] = -D * self / hi + drho;
   }
 
-  // Marks the changed particles and every particle their rows of `list` hold; returns how many
-  // particles are marked.
+  // Marks the changed particles and every particle their rows of `list` hold (with own_h, whose
+  // neighbours' rho do not depend on h_i, the changed particles alone); returns how many particles
+  // are marked.
   std::size_t mark(const NeighbourList& list) {
     const std::size_t m = changed_.size();
+    if constexpr (own_h) {
+      for (int i : changed_) mark_[i] = 1;
+      return m;
+    } else {
 #pragma omp parallel for schedule(dynamic, 256) if (m >= parallel_threshold)
-    for (std::size_t k = 0; k < m; ++k) {
-      const int i = changed_[k];
-      std::atomic_ref<unsigned char>(mark_[i]).store(1, std::memory_order_relaxed);
-      for (int j : list.of(i)) std::atomic_ref<unsigned char>(mark_[j]).store(1, std::memory_order_relaxed);
+      for (std::size_t k = 0; k < m; ++k) {
+        const int i = changed_[k];
+        std::atomic_ref<unsigned char>(mark_[i]).store(1, std::memory_order_relaxed);
+        for (int j : list.of(i)) std::atomic_ref<unsigned char>(mark_[j]).store(1, std::memory_order_relaxed);
+      }
+      std::size_t marked = 0;
+      for (unsigned char k : mark_) marked += k;
+      return marked;
     }
-    std::size_t marked = 0;
-    for (unsigned char k : mark_) marked += k;
-    return marked;
   }
 
   // next_[i]: the h that i's pass proposes (above); off_[i]: how far h_i is from (50) with rho_i.
@@ -183,14 +200,17 @@ class FixedNeighboursNewton {
       if (lo >= h * (1.0 - c.tol)) lo = 0.0;
     }
     // (50)'s fixed point lies on the side f points to (above h for f < 0), so with an open bracket
-    // (hi infinite) one of the first two is inside and the midpoint is taken only between two bounds.
+    // (hi infinite) one of the first two is inside and the midpoint is taken only between two bounds;
+    // unless f is round-off, and Newton's step and the fixed point both round to h itself: h is then
+    // the root as closely as it can be represented, and stays (the midpoint of an open bracket would
+    // be infinite).
     auto inside = [&](double x) { return x > lo && x < hi; };
     const double fixed = c.hfact * std::pow(p.m[i] / rho, 1.0 / D);  // (50)
     off_[i] = std::abs(fixed - h) / h;
     double h_new = h;
     if (f != 0.0) {
       const double newton = h - f / fp;
-      h_new = fp > 0.0 && inside(newton) ? newton : inside(fixed) ? fixed : 0.5 * (lo + hi);
+      h_new = fp > 0.0 && inside(newton) ? newton : inside(fixed) ? fixed : newton == h ? h : 0.5 * (lo + hi);
     }
     next_[i] = h_new < c.h_max ? h_new : c.h_max;
   }

@@ -12,7 +12,8 @@
 namespace sph {
 
 // Time derivatives the terms of a scene accumulate, and mu_max = max_j |mu_ij| (46) of the
-// artificial viscosity (0 without), which the Courant condition reads. h_set: the evaluation sets h
+// artificial viscosity (0 without), which the Courant condition reads (or, in a scheme whose
+// viscosity has a signal velocity, max_j v_sig,ij: hydro/signal_viscosity.hpp). h_set: the evaluation sets h
 // (a density phase solving (50), schemes/chapter.hpp), and dhdt only predicts h for the next one
 // (time/leapfrog.hpp).
 template <int D>
@@ -62,10 +63,27 @@ struct Pair {
   Vec<D> gradW, vi, vj;
 };
 
-// What term T writes in the pair loop (nothing without pair()).
-template <int D, class T>
+// A pair with the kernel's gradient at each end's own support radius as well: grad_i W_ij(h_i) and
+// grad_i W_ij(h_j), for the terms of a grad-h scheme (schemes/gradh_switches.hpp), which weigh each
+// end's kernel by its own h instead of h_ij. A scene hands its terms such pairs when one of them
+// declares `static constexpr bool own_h_kernels = true`; it then counts a pair as interacting
+// within max(h_i, h_j), where either kernel reaches.
+template <int D>
+struct OwnHPair : Pair<D> {
+  Vec<D> gradWi, gradWj;
+};
+
+template <class T>
+constexpr bool own_h_kernels = requires { requires std::remove_cvref_t<T>::own_h_kernels; };
+
+// The pair type of a scene of the terms T...: OwnHPair where a term asks for it, else Pair.
+template <int D, class... T>
+using PairOf = std::conditional_t<(own_h_kernels<T> || ...), OwnHPair<D>, Pair<D>>;
+
+// What term T writes in the pair loop (nothing without pair()); P the scene's pair type.
+template <int D, class T, class P = Pair<D>>
 constexpr Writes writes_of() {
-  if constexpr (requires(const T& t, const Particles<D>& p, PairSums<D>& s, const Pair<D>& q) { t.pair(p, s, q); }) {
+  if constexpr (requires(const T& t, const Particles<D>& p, PairSums<D>& s, const P& q) { t.pair(p, s, q); }) {
     static_assert(requires { T::writes; }, "a term with pair() declares what it writes: static constexpr Writes writes");
     return T::writes;
   } else {
@@ -181,12 +199,22 @@ struct Scene {
       rij[k] = b.dx[k][t];
       vj[k] = vs[k][j];
     }
-    const Pair<D> q{i, j, rij, b.r[t], b.h[t], Vec<D>(b.g[t] * rij), vi, vj};  // grad_i W_ij (9)
+    const Pair<D> pq{i, j, rij, b.r[t], b.h[t], Vec<D>(b.g[t] * rij), vi, vj};  // grad_i W_ij (9)
     PairSums<D> s{};
-    std::apply([&](const auto&... term) { (pair(term, p, s, q), ...); }, terms);
-    // 1 inside, 0 beyond h_ij, multiplied rather than selected: GCC 12 would otherwise load the
-    // fields under the mask, as masked gathers it does not emulate (and does not vectorise).
-    const double in = b.r[t] < b.h[t] ? 1.0 : 0.0;
+    // 1 inside, 0 beyond h_ij (beyond max(h_i, h_j) with own_h kernels), multiplied rather than
+    // selected: GCC 12 would otherwise load the fields under the mask, as masked gathers it does
+    // not emulate (and does not vectorise).
+    double in;
+    if constexpr (std::is_same_v<PairType, OwnHPair<D>>) {
+      const double r = b.r[t], hi = p.h[i], hj = p.h[j];
+      const double gi = r > 0.0 ? Kernel::dWdr(r, hi) / r : 0.0, gj = r > 0.0 ? Kernel::dWdr(r, hj) / r : 0.0;
+      const OwnHPair<D> q{pq, Vec<D>(gi * rij), Vec<D>(gj * rij)};
+      std::apply([&](const auto&... term) { (pair(term, p, s, q), ...); }, terms);
+      in = r < std::max(hi, hj) ? 1.0 : 0.0;
+    } else {
+      std::apply([&](const auto&... term) { (pair(term, p, s, pq), ...); }, terms);
+      in = b.r[t] < b.h[t] ? 1.0 : 0.0;
+    }
     if constexpr (written.dvdt)
 #pragma GCC unroll 3
       for (int k = 0; k < D; ++k) sh.dvdt[k][t] = in * s.dvdt[k];
@@ -242,18 +270,19 @@ struct Scene {
     else return IsaPath::avx512;
   }
   static constexpr IsaPath widest = std::min({IsaPath::avx512, widest_of<Terms>()...});
+  using PairType = PairOf<D, Terms...>;
   template <class T>
-  static constexpr bool has_pair = requires(T& t, const Particles<D>& p, PairSums<D>& s, const Pair<D>& pr) {
+  static constexpr bool has_pair = requires(T& t, const Particles<D>& p, PairSums<D>& s, const PairType& pr) {
     t.pair(p, s, pr);
   };
   // What the scene's terms write, together.
-  static constexpr Writes written = (Writes{} | ... | writes_of<D, Terms>());
+  static constexpr Writes written = (Writes{} | ... | writes_of<D, Terms, PairType>());
   template <class T>
   static void prepare(T& t, Particles<D>& p, const Neighbourhood<D>& nb) {
     if constexpr (requires { t.prepare(p, nb); }) t.prepare(p, nb);
   }
   template <class T>
-  static void pair(const T& t, const Particles<D>& p, PairSums<D>& s, const Pair<D>& pr) {
+  static void pair(const T& t, const Particles<D>& p, PairSums<D>& s, const PairType& pr) {
     if constexpr (has_pair<T>) t.pair(p, s, pr);
   }
   template <class T>

@@ -8,6 +8,8 @@
 //                           then selects nb.list anew from nb.lists for the force loop)
 //   force(p, nb, d)         then the force loop: the rates d
 //   time_step(p, d, c)      the scheme's time-step rule at a state with its rates
+//   stepped(p, t)           optional: after every step, at its end time t (a state the scheme
+//                           advances once a step, outside the integrator: a viscosity switch)
 // and `static constexpr bool reorderable`: false when it keeps arrays over the particles
 // (HydroControls::reorder_every). A reader counts the neighbour loops of a step from the phases.
 #include <concepts>
@@ -55,6 +57,14 @@ HydroOutcome evolve(S& s, Particles<D>& p, const Box<D>& box, const HydroControl
   auto density = [&](Particles<D>& q, const Neighbourhood<D>& nb) { s.density(q, nb); };
   auto force = [&](Particles<D>& q, const Neighbourhood<D>& nb, Derivatives<D>& d) { s.force(q, nb, d); };
   auto time_step = [&](const Particles<D>& q, const Derivatives<D>& d) { return s.time_step(q, d, c.step); };
+  if constexpr (requires(const Particles<D>& q) { s.stepped(q, 0.0); }) {
+    HydroHooks<D> with_stepped = hooks;
+    with_stepped.stepped = [&s, &hooks](const Particles<D>& q, const Derivatives<D>& d, long step, double t) {
+      s.stepped(q, t);
+      if (hooks.stepped) hooks.stepped(q, d, step, t);
+    };
+    return evolve_rates<D>(density, force, time_step, p, box, c, with_stepped, S::reorderable);
+  }
   return evolve_rates<D>(density, force, time_step, p, box, c, hooks, S::reorderable);
 }
 

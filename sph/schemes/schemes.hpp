@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "sph/schemes/chapter.hpp"
+#include "sph/schemes/gradh_switches.hpp"
 
 namespace sph {
 
@@ -16,7 +17,7 @@ template <class... S>
 struct SchemeList {};
 
 // The registry, the default (the chapter's scheme) first.
-using Schemes = SchemeList<ChapterScheme>;
+using Schemes = SchemeList<ChapterScheme, GradhSwitchesScheme>;
 
 template <class... S>
 std::vector<std::string> scheme_names(SchemeList<S...>) {

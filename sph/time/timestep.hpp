@@ -44,6 +44,26 @@ double courant_time_step(const Particles<D>& p, const Derivatives<D>& d, double 
   return dt;
 }
 
+// The Courant condition on the signal speed of a scheme whose viscosity writes max_j v_sig,ij into
+// d.mu_max (hydro/signal_viscosity.hpp), with the acceleration and cooling criteria of
+// courant_time_step and Monaghan's smoothing length h_i / 2:
+//   dt = min_i min(C (h_i/2) / v_sig,i, C_force sqrt((h_i/2) / |a_i|), C_energy u_i / |du_i/dt| where du_i/dt < 0),
+// v_sig,i = max_j v_sig,ij, or 2 c_i (a pair at rest's) for a particle without neighbours.
+template <int D>
+double signal_time_step(const Particles<D>& p, const Derivatives<D>& d, const TimeStepControl& c) {
+  double dt = std::numeric_limits<double>::infinity();
+  const std::size_t n = p.size();
+#pragma omp parallel for reduction(min : dt) if (n >= parallel_threshold)
+  for (std::size_t i = 0; i < n; ++i) {
+    const double hm = 0.5 * p.h[i], signal = std::max(d.mu_max[i], 2.0 * p.c[i]);
+    if (signal > 0.0) dt = std::min(dt, c.C * hm / signal);
+    const double a = d.dvdt[i].norm();
+    if (a > 0.0) dt = std::min(dt, c.C_force * std::sqrt(hm / a));
+    if (d.dudt[i] < 0.0 && c.C_energy > 0.0) dt = std::min(dt, c.C_energy * p.u[i] / -d.dudt[i]);
+  }
+  return dt;
+}
+
 // (43) as written: dt = eta h / max_i |v_i| (h: the smallest support radius), and dt = eta^2
 // when every particle is at rest. Ignores the sound speed: unsafe for a gas (errata).
 template <int D>

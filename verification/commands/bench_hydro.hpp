@@ -186,7 +186,14 @@ inline HydroTimes time_hydro_step(const std::string& scheme, sph::Particles<3>& 
   HydroTimes t{};
   t.pairs = static_cast<double>(nl.pairs());
   with_bench_scheme(scheme, [&](auto& s) {
-    t.forces = timer(whole([&] { s.force(p, Neighbourhood<3>{nl, box}, d); }));
+    // The force loop alone, at a state the scheme's start and density phase have set (the force
+    // loop reads what they set: h and rho, and the grad-h scheme's Omega and alpha), on the pairs
+    // that phase selected.
+    s.start(p, box);
+    VerletList<3> lists(HydroControls{}.skin);
+    const NeighbourList& pairs = lists.update(p.x, p.h, box);
+    s.density(p, Neighbourhood<3>{pairs, box, &lists});
+    t.forces = timer(whole([&] { s.force(p, Neighbourhood<3>{pairs, box}, d); }));
     // The scheme's step, its rates on lists searched afresh at every evaluation (with evolve's skin,
     // within which a density phase may set h), their buffers kept as evolve's are: fresh ones fault
     // pages in every step.

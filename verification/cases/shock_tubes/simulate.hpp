@@ -10,6 +10,7 @@
 #include "sph/density/variable_h.hpp"
 #include "sph/hydro/eos.hpp"
 #include "sph/hydro/forms.hpp"
+#include "sph/schemes/schemes.hpp"
 #include "verification/cases/shock_tubes/tube.hpp"
 
 namespace sphv {
@@ -82,10 +83,11 @@ Layout<D> layout(const TubeProblem& pr, double hfact, long n, TubeRun& run) {
   return L;
 }
 
-// Runs one scene type to t_end with the boundary layers held, recording the conservation
-// diagnostics of the active particles.
-template <int D, class... Terms>
-void advance(sph::Scene<D, Terms...> scene, Layout<D>& L, const sph::HydroControls& c, TubeRun& run) {
+// Runs the particles to t_end by evolve(p, box, hooks) (a scene's or a scheme's evolve, returning
+// its sph::HydroOutcome) with the boundary layers held, recording the conservation diagnostics of
+// the active particles.
+template <int D, class Evolve>
+void advance(Evolve&& evolve, Layout<D>& L, TubeRun& run) {
   sph::Particles<D>& p = L.p;
   const std::size_t na = L.active;
   sph::Derivatives<D> at_rest;
@@ -114,7 +116,15 @@ void advance(sph::Scene<D, Terms...> scene, Layout<D>& L, const sph::HydroContro
     run.mass_drift = std::max(run.mass_drift, std::abs(t.mass - first.mass) / first.mass);
     run.energy_drift = std::abs(t.energy - first.energy) / first.energy;
   };
-  run.outcome = sph::evolve(scene, p, L.box, c, hooks);
+  run.outcome = evolve(p, L.box, hooks);
+}
+
+// evolve for advance: the scene's, with the controls c.
+template <int D, class Scene>
+auto scene_evolve(Scene scene, const sph::HydroControls& c) {
+  return [scene, &c](sph::Particles<D>& p, const sph::Box<D>& box, const sph::HydroHooks<D>& hooks) mutable {
+    return sph::evolve(scene, p, box, c, hooks);
+  };
 }
 
 template <int D, class F>
@@ -150,7 +160,17 @@ TubeRun simulate_tube_with(const TubeProblem& pr, const TubeMethod& m, long n) {
     using S = sph::Scene<D, sph::SummationDensity<D, K>, sph::EquationOfState<D, sph::IdealGas>,
                          sph::EulerSymmetric<D, sph::Lambda1>, sph::EnergySymmetric<D, sph::Lambda1>,
                          sph::ArtificialViscosity<D>, sph::SmoothingLengthRate<D>>;
-    tube::advance(S{{{}, eos, {}, {}, visc, {}}}, L, controls, run);
+    tube::advance<D>(tube::scene_evolve<D>(S{{{}, eos, {}, {}, visc, {}}}, controls), L, run);
+  } else if (m.scheme != "forms") {
+    // A scheme of the registry with its default forms (one type a scheme), h by (50): the
+    // options' gamma, hfact, alpha and beta.
+    sph::SchemeOptions o;
+    o.gamma = pr.gamma, o.hfact = m.hfact, o.alpha = m.alpha, o.beta = m.beta;
+    sph::with_default_scheme<D, K>(m.scheme, o, [&](auto& scheme) {
+      tube::advance<D>([&](sph::Particles<D>& p, const sph::Box<D>& box, const sph::HydroHooks<D>& hooks) {
+        return sph::evolve(scheme, p, box, controls, hooks);
+      }, L, run);
+    });
   } else {
     // The continuity equation starts from the summation density (27) of the initial particles,
     // not from the sharp jump: a sharp jump puts the first low-density particle in a runaway.
@@ -163,7 +183,7 @@ TubeRun simulate_tube_with(const TubeProblem& pr, const TubeMethod& m, long n) {
       auto simulate = [&](auto euler, auto energy) {
         using S = sph::Scene<D, decltype(density), sph::EquationOfState<D, sph::IdealGas>, decltype(euler),
                              decltype(energy), sph::ArtificialViscosity<D>, sph::SmoothingLengthRate<D>>;
-        tube::advance(S{{density, eos, euler, energy, visc, {}}}, L, controls, run);
+        tube::advance<D>(tube::scene_evolve<D>(S{{density, eos, euler, energy, visc, {}}}, controls), L, run);
       };
       if constexpr (D == 1)
         sph::with_hydro_forms<D>(m.euler, energy_form, m.lambda, simulate);

@@ -29,6 +29,9 @@ struct TubeMethod {
   double lambda = 1.5;                // for (25)
   double hfact = 2.4;                 // initial support radius / particle spacing, (50)
   std::string kernel = "cubic_spline";  // sph/kernel/kernels.hpp; others: 1D, the default forms only
+  // forms: the scene of the forms above, h by (53); or a scheme of the registry by name
+  // (sph/schemes/), its default forms and h rule, with hfact, alpha, beta.
+  std::string scheme = "forms";
   double alpha = 1.0, beta = 2.0, eps = 0.01, h_scale = 0.5;  // artificial viscosity (45), (46)
   sph::HydroControls controls;
 };

@@ -38,6 +38,13 @@
 // nu ~ alpha c_s h, that the continuum limit of (45) predicts (sound_wave/errors.hpp derives it):
 // first order in h, the price of the viscosity in a smooth flow; the measured rate converges to
 // the prediction at first order.
+// scheme=gradh_switches (sph/schemes/gradh_switches.hpp, hmode=iterate50, its only h rule): with
+// alpha = 0 (the switch's alpha_max, so no viscosity) its grad-h forces and artificial conduction
+// keep the chapter's order 2 (measured L1_v 2.52e-3, 6.26e-4, 1.56e-4 at n = 32, 64, 128: 2.01,
+// 2.00). With alpha = 1 the switch starts at alpha_max and decays over tau ~ h / c, so the wave's
+// damping is not the constant-alpha rate nu k^2 / 4 (its Gamma measured at 0.31, 0.19, 0.12 of it)
+// and L1_v falls at 1.68, 1.72 over those levels, short of the order 2 the decay suggests: no
+// claim there yet.
 // The measured series behind these statements: docs/cases/sound_wave.md; the current numbers: the
 // report's page of the case.
 #include <cmath>
@@ -203,6 +210,9 @@ OrderClaims sound_orders(const Params& p) {
                            : OrderClaim{2.0, 0.3, why};
     return c;
   }
+  if (p.text("scheme") != sph::ChapterScheme::name)
+    return {{"L1_v", no_order("a viscosity switch (sph/schemes/): neither the constant-alpha damping nor the inviscid "
+                              "order; measured 1.68, 1.72 at n = 32..128 for gradh_switches (pre-asymptotic)")}};
   // Band 0.2: measured 0.94, 0.99 (1D, 3D standard), the damping's own first-order correction.
   const std::string why = "the viscosity's damping nu k^2 / 4, nu ~ alpha c_s h (sound_wave/errors.hpp), dominates "
                           "the error: first order in h ~ 1/n";
@@ -247,7 +257,8 @@ const Registration reg{Case{
     .error_defs = sound_wave::error_defs,
     .variants = {{}, {"dim=3", "hfact=2.4"}, {"dim=2", "hfact=2.4"}, {"dim=2", "hfact=2.7536"}, {"hfact=2.4"},
                  {"alpha=1"}, {"alpha=1", "dim=3", "hfact=2.4"},
-                 {"hfact=6"}, {"hfact=6", "kernel=quintic_spline"}, {"hfact=6", "kernel=wendland_c6"}},
+                 {"hfact=6"}, {"hfact=6", "kernel=quintic_spline"}, {"hfact=6", "kernel=wendland_c6"},
+                 {"scheme=gradh_switches", "hmode=iterate50"}},
     .levels_for = [](const Params& p) {
       const long d = p.integer("dim");
       if (d == 2 && !floored(p)) return Levels{.quick = {32, 48}, .standard = {32, 48, 64}, .full = {32, 48, 64}};
