@@ -166,8 +166,8 @@ OrderClaims sedov_orders(const Params& p) {
   if (p.integer("dim") == 2) return {{"shock_radius", radius_2d}, {"L1_rho", p.real("gamma") == 1.4 ? l1 : l1_2d}};
   if (p.real("r_blast") == 0.25) {
     const std::string why = "the blast's heat on R/4 spans {extra.blast_spacings} lattice spacings at {levels}: the hot "
-                            "particles keep it, the kinetic share of the energy is {extra.kinetic_fraction} against "
-                            "{extra.kinetic_fraction_exact} exact, the front's offset {extra.front_offset} and L1_rho "
+                            "particles keep it, the kinetic share of the energy is {extra.kinetic_fraction} (exact: "
+                            "{extra.kinetic_fraction_exact}), the front's offset {extra.front_offset} and L1_rho "
                             "{L1_rho}";
     return {{"shock_radius", known_failure(radius.expected, radius.band, why, "dim=3,r_blast=0.5")},
             {"L1_rho", known_failure(l1.expected, l1.band, why, "dim=3,r_blast=0.5")}};
