@@ -22,7 +22,7 @@ from urllib.parse import quote
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import report_figures as figs  # noqa: E402
-import report_kernels  # noqa: E402
+import report_compare  # noqa: E402
 from report_data import (OUTCOMES, claim_notes, claim_order_text, counts, errors_of, expected_text, file_of, fmt,  # noqa: E402
                          is_dirty, load, num, order_text, provenances, read_json, row_note, row_reason, slug, sweep_wide_failures, threads_text, variant_named)
 
@@ -230,13 +230,17 @@ def checks_only_cell(ss, span):
             "verification checks pass</td>")
 
 
-def kernel_links(sweeps):
-    """A line linking each case page's kernel comparison, where a case has one."""
-    cases = [case for case, ss in sorted(sweeps.items()) if report_kernels.groups(ss)]
-    if not cases:
-        return ""
-    return ("<p id='kernel-comparisons'>Kernel comparisons (error at fixed n and at fixed cost, order and wall time per kernel): "
-            + ", ".join(f"<a href='{e(case_page_name(c))}#kernels'>{e(c)}</a>" for c in cases) + ".</p>")
+def comparison_links(sweeps):
+    """Per parameter compared (report_compare.py), a line linking each case page's comparison in
+    it, where a case has one."""
+    lines = []
+    for key in report_compare.PARAMETERS:
+        cases = [case for case, ss in sorted(sweeps.items()) if report_compare.groups(ss, key)]
+        if cases:
+            lines.append(f"<p id='{key}-comparisons'>{e(key.capitalize())} comparisons (error at fixed n and at fixed cost, "
+                         f"order and wall time per {e(key)}): "
+                         + ", ".join(f"<a href='{e(case_page_name(c))}#{e(key)}s'>{e(c)}</a>" for c in cases) + ".</p>")
+    return "".join(lines)
 
 
 def index_page(name, sweeps, missing, tier, mutants_link, drawn=frozenset()):
@@ -247,7 +251,7 @@ def index_page(name, sweeps, missing, tier, mutants_link, drawn=frozenset()):
     verdict = (f"<p class='verdict fail'>FAIL: {failing} of {n_sweeps} case variants fail (<a href='#failing'>the failing rows</a>)</p>"
                if failing else f"<p class='verdict pass'>PASS: all {n_sweeps} case variants pass</p>")
     body = [f"<h1>sphv verification report: {e(name)}</h1>", verdict, counts_html(c, "#failing"),
-            failing_rows(sweeps, missing, drawn), cases_table(sweeps, missing), kernel_links(sweeps),
+            failing_rows(sweeps, missing, drawn), cases_table(sweeps, missing), comparison_links(sweeps),
             f"<p>{len(sweeps)} cases, {n_sweeps} case variants, summed run time {wall:.1f} s. Each count is of errors of a case "
             "variant at its finest level. <b class='verified'>verified</b>: the observed order lies in the claim's window "
             "(expected ± band, the band at most 0.3 unless derived from theory, the lower edge above half the claimed order; "
@@ -316,52 +320,62 @@ def figure_html(out, stem, caption, anchor=None, extra=""):
             f"<figcaption>{e(caption)}{extra} (<a href='{e(pdf)}'>PDF</a>)</figcaption></figure>")
 
 
-def kernel_section(case, ss, out, figdir, made):
-    """Per group of variants differing only in the kernel (report_kernels.py): its figure (error
-    against n and against wall time, per kernel), then its table; "" when the case has none."""
+def comparison_section(case, ss, key, out, figdir, made):
+    """Per group of variants compared in the parameter key (report_compare.py): what the others
+    change against the first, whether the group is like for like, its figure (error against n and
+    against wall time, per value), then its table; "" when the case has none."""
     parts = []
-    for label, members in report_kernels.groups(ss):
-        errs = report_kernels.errors(members)
-        stem = figs.kernels(case, label, members, errs, figdir / f"kernels_{slug(label)}")
+    for g in report_compare.groups(ss, key):
+        errs = report_compare.errors(g.members)
+        anchor = f"{key}s-{slug(g.label)}"
+        parts.append(f"<h3 id='{e(anchor)}'>{e(report_compare.title(g))}</h3>"
+                     f"<p>{e(report_compare.unlike_text(g))} " + " ".join(report_compare.effects(g, e, e)) + "</p>")
+        stem = figs.comparison(g.members, errs, figdir / f"{key}s_{slug(g.label)}")
         if stem:
-            made.append((case, None, label, "kernels", stem))
-            parts.append("<div class='figs wide'>" + figure_html(out, stem, kernel_caption(case, label, members)) + "</div>")
-        t = ["<table><tr><th>error</th><th>kernel</th><th>levels n</th><th>error at fixed n</th><th>wall s at fixed n</th>"
+            made.append((case, None, g.label, f"{key}s", stem))
+            parts.append("<div class='figs wide'>" + figure_html(out, stem, comparison_caption(case, g)) + "</div>")
+        t = [f"<table><tr><th>error</th><th>{e(key)}</th><th>variant</th><th>levels n</th><th>error at fixed n</th><th>wall s at fixed n</th>"
              "<th>error at fixed cost</th><th>observed ± s.e.</th><th>claim [window]</th><th>outcome</th></tr>"]
         for err in errs:
-            n_fixed, t_fixed, rows = report_kernels.comparison(members, err)
+            n_fixed, t_fixed, rows = report_compare.comparison(g.members, err)
             best = {k: min((r[k] for r in rows if num(r[k])), default=None) for k in ("at_n", "at_cost")}
             cell = lambda r, k: (f"<td class='num'>{'<b>' if r[k] == best[k] and num(r[k]) else ''}{fmt(r[k], '.3e')}"  # noqa: E731
                                  f"{'</b>' if r[k] == best[k] and num(r[k]) else ''}</td>")
             for j, r in enumerate(rows):
                 head = (f"<td rowspan={len(rows)}>{e(err)}<br><span class='prov'>fixed n = {fmt(n_fixed, 'g')}, "
                         f"fixed cost {fmt(t_fixed, '.3g')} s</span></td>") if j == 0 else ""
-                t.append(f"<tr{' class=first' if j == 0 else ''}>{head}<td class='nw'>{e(r['kernel'])}</td>"
+                t.append(f"<tr{' class=first' if j == 0 else ''}>{head}<td class='nw'>{e(r['value'])}</td><td class='var'>{e(r['variant'])}</td>"
                          f"<td>{e(', '.join(map(str, r['levels'])))}</td>{cell(r, 'at_n')}<td class='num'>{fmt(r['wall_at_n'], '.3g')}</td>"
                          f"{cell(r, 'at_cost')}{order_cell(r)}<td class='num'>{e(expected_text(r))}</td>{outcome_cell(r['outcome'])}</tr>")
         parts.append("".join(t) + "</table>")
+    lone = report_compare.alone_text(ss, key)
+    if lone:
+        parts.append(f"<p>{e(lone)}</p>")
     if not parts:
         return ""
-    return ("<h2 id='kernels'>Kernel comparison</h2><p>Variants that differ only in the kernel (parameter <code>kernel</code>). "
-            "Per error: the error at a fixed resolution (the finest n every kernel ran) with its wall time; at a fixed cost "
-            "(each kernel's error interpolated, linearly in log error against log wall time, between the two runs that "
-            "bracket the largest wall time every kernel's sweep reached); the observed order of the sweep and its outcome. "
-            "The lowest error at fixed n and at fixed cost in bold. Wall times are single measurements of each run "
+    return (f"<h2 id='{e(key)}s'>{e(key.capitalize())} comparison</h2><p>Variants compared in the parameter <code>{e(key)}</code>: "
+            f"those whose settings are the same but for the {e(key)} (like for like); a variant setting the {e(key)} with no such "
+            f"sibling is compared with the sweep of another {e(key)} whose parameters differ least, and the group names "
+            "what differs. Per error: the error at a fixed resolution (the finest n every member ran) with its wall time; at a "
+            "fixed cost (each member's error interpolated, linearly in log error against log wall time, between the two runs "
+            "that bracket the largest wall time every member's sweep reached); the observed order of the sweep and its "
+            "outcome. The lowest error at fixed n and at fixed cost in bold; the ratios in each group's sentence are to its "
+            "first member's. Wall times are single measurements of each run "
             f"(on {e(threads_text(r for s in ss for r in s['runs']))}) and carry the machine's noise.</p>" + "".join(parts))
 
 
-def kernel_caption(case, label, members):
-    return (f"{case} [{label}]: every error of the kernels {', '.join(k for k, _ in members)} against n (top) and against "
+def comparison_caption(case, g):
+    return (f"{case} [{report_compare.title(g)}]: every error of each {g.key} against n (top) and against "
             "the wall time of each run (bottom); dotted: the fixed resolution and the fixed cost of the table")
 
 
 def case_page(case, ss, results, out, made, copy=True):
     figdir = out / "fig" / slug(case)
     body = ["<p><a href='index.html'>&larr; summary of all cases</a></p>", f"<h1>{e(case)}</h1>", claim_sentence(case, ss)]
-    # Profiles and convergence first, then error against run time, then the kernel comparison.
+    # Profiles and convergence first, then error against run time, then the comparisons (kernel, scheme).
     body.append("<h2>Figures</h2><p>Per variant its profiles (finest run) and the convergence of each error with an order "
-                "claim; errors without one are tabulated per level. Then each error against run time and the kernel "
-                "comparison. Each figure links its vector PDF.</p>")
+                "claim; errors without one are tabulated per level. Then each error against run time and the "
+                "comparisons of kernels and schemes. Each figure links its vector PDF.</p>")
     for s in ss:
         v = slug(s["variant"])
         body.append(f"<h3 id='{figures_anchor(s['variant'])}'>{e(s['variant'])}</h3><div class='figs'>")
@@ -402,7 +416,7 @@ def case_page(case, ss, results, out, made, copy=True):
                                                   f"runs on {threads_text(r for s in ss for r in s['runs'])}"))
     if walls:
         body.append("<h3>Error against run time</h3><div class='figs'>" + "".join(walls) + "</div>")
-    body.append(kernel_section(case, ss, out, figdir, made))
+    body += [comparison_section(case, ss, key, out, figdir, made) for key in report_compare.PARAMETERS]
 
     defs = {}
     for s in ss:

@@ -186,12 +186,12 @@ def run_figure(f, stem):
     return save(fig, stem, left=0.19, bottom=0.17, top=0.97)
 
 
-def kernels(case, label, members, errors, stem):
-    """The kernel comparison of one group (report_kernels.py): per error, the error against n (the
+def comparison(members, errors, stem):
+    """The comparison of one group (report_compare.py): per error, the error against n (the
     observed order's slope) and below it against the wall time of each run (the fixed cost marked
-    by a dotted line), one line per kernel; at most three errors across the page, further ones in
-    further pairs of rows."""
-    import report_kernels as rk  # noqa: E402 (the figures module stays free of the comparison's logic)
+    by a dotted line), one line per member, labelled by its value; at most three errors across the
+    page, further ones in further pairs of rows."""
+    import report_compare as rc  # noqa: E402 (the figures module stays free of the comparison's logic)
     if not errors:
         return None
     cols = min(3, len(errors))
@@ -204,13 +204,13 @@ def kernels(case, label, members, errors, stem):
     drawn = 0
     for j, err in enumerate(errors):
         top, bottom = axes[2 * (j // cols)][j % cols], axes[2 * (j // cols) + 1][j % cols]
-        n_fixed, t_fixed, _ = rk.comparison(members, err)
-        for k, (kernel, s) in enumerate(members):
-            pts = rk.points(s, err)
+        n_fixed, t_fixed, _ = rc.comparison(members, err)
+        for k, (value, s) in enumerate(members):
+            pts = rc.points(s, err)
             if not pts:
                 continue
             n, t, y = zip(*pts)
-            style = dict(color=f"C{k % 10}", marker="os^vDP"[k % 6], ms=3, lw=0.8, label=mathtext(kernel))
+            style = dict(color=f"C{k % 10}", marker="os^vDP"[k % 6], ms=3, lw=0.8, label=mathtext(value))
             top.loglog(n, y, **style)
             bottom.loglog(t, y, **style)
             drawn += 1
@@ -218,7 +218,7 @@ def kernels(case, label, members, errors, stem):
             top.axvline(n_fixed, color="0.5", ls=":", lw=0.8)
         if t_fixed is not None:
             bottom.axvline(t_fixed, color="0.5", ls=":", lw=0.8)
-        levels = sorted({p[0] for _, s in members for p in rk.points(s, err)})
+        levels = sorted({p[0] for _, s in members for p in rc.points(s, err)})
         level_ticks(top, levels)
         top.set_title(mathtext(err))
         top.set_xlabel("$n$", labelpad=1)

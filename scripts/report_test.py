@@ -4,8 +4,9 @@ reader relies on: no warning on stderr, every href and src resolves inside the f
 counts at the top match the rows of the sweep.json files, a convergence figure (PNG and PDF)
 for every claimed error of every variant and none for errors without an order claim, a
 run-time figure per claimed error, every figure entry its own file, the bundle's provenance
-(each point's own threads, dates and wall time), the kernel comparison of a case with variants
-differing only in `kernel` (its fixed-cost errors recomputed), and with --mutants the kill matrix page. With --dirty it
+(each point's own threads, dates and wall time), the kernel and scheme comparisons (which variants
+each compares, like for like or said not to be, its numbers recomputed from the sweeps, a variant
+with nothing to compare with said to be so), and with --mutants the kill matrix page. With --dirty it
 also checks that a bundle of results whose provenance records a dirty tree is refused
 (--allow-dirty is exercised by bundle_test.sh).
 
@@ -90,53 +91,157 @@ def distinct_figures(out, stdout):
     expect(m and int(m.group(1)) == len(entries), f"report.py says {m and m.group(1)} figures, the pages show {len(entries)}")
 
 
-def kernel_groups(sweeps):
-    """{(case, shared settings): {kernel: sweep}} of the sweeps that differ only in the setting
-    `kernel` (the default variant's kernel from its runs' params), read here without
-    report_kernels.py, two kernels or more."""
-    found = {}
+KEYS = ("kernel", "scheme")  # the parameters the report compares variants in
+
+
+def settings(s):
+    return dict(x.split("=", 1) for x in s["settings"] if "=" in x)
+
+
+def held_params(s):
+    """The parameters every run of the sweep recorded alike, less the level n."""
+    ps = [r.get("params", {}) for r in s["runs"]]
+    return {k: v for k, v in ps[0].items() if k != "n" and all(p.get(k) == v for p in ps)}
+
+
+def param_differences(a, b, key):
+    """The names of the recorded parameters besides key in which two sweeps differ."""
+    pa, pb = held_params(a), held_params(b)
+    return sorted(k for k in set(pa) | set(pb) if k != key and pa.get(k) != pb.get(k))
+
+
+def compared_groups(sweeps, key):
+    """The comparisons the report must show in key, read here without report_compare.py:
+    [(case, label, [(value, sweep)] base first, nearest)]. Sweeps whose settings are the same
+    but for key, two values or more (a sweep not setting key runs the value its runs record),
+    are a like-for-like group; a variant setting key with no such sibling pairs with the sweep of
+    another value reporting one of its errors whose recorded parameters differ least (then the
+    one with fewest settings): nearest. Also returns the variants with nothing to pair with."""
+    by_rest = {}
     for s in sweeps:
-        st = dict(x.split("=", 1) for x in s["settings"] if "=" in x)
-        k = st.pop("kernel", None) or s["runs"][0].get("params", {}).get("kernel")
-        if k:
-            found.setdefault((s["case"], ",".join(f"{a}={b}" for a, b in sorted(st.items())) or "default"), {})[k] = s
-    return {g: m for g, m in found.items() if len(m) >= 2}
+        st = settings(s)
+        v = st.pop(key, None) or s["runs"][0].get("params", {}).get(key)
+        if v:
+            by_rest.setdefault((s["case"], tuple(sorted(st.items()))), []).append((v, s))
+    out, lone = [], []
+    for (case, rest), members in by_rest.items():
+        label = ",".join(f"{a}={b}" for a, b in rest) or "default"
+        if len({v for v, _ in members}) >= 2:
+            out.append((case, label, sorted(members, key=lambda m: key in settings(m[1])), False))
+        elif key in settings(members[0][1]):
+            v, s = members[0]
+            errs = {r["error"] for r in s["rows"]}
+            others = [(len(param_differences(o, s, key)), len(o["settings"]), w, o) for (c, _), ms in by_rest.items() if c == case
+                      for w, o in ms if w != v and errs & {r["error"] for r in o["rows"]}]
+            if others:
+                *_, w, base = min(others, key=lambda x: x[:2])
+                out.append((case, label, [(w, base), (v, s)], True))
+            else:
+                lone.append((case, s["variant"]))
+    return out, lone
 
 
-def kernel_checks(out, sweeps):
-    """Each case with kernel variants shows one kernel comparison per group (figure, then a table
-    with a row per kernel and error); the error at the fixed cost is each kernel's, interpolated
-    log-log on its error-against-wall-time curve at the cheapest curve's end, recomputed here;
-    a case without kernel variants shows none."""
-    groups = kernel_groups(sweeps)
-    with_kernels = {case for case, _ in groups}
-    expect(with_kernels or not any("kernel=" in x for s in sweeps for x in s["settings"]), "kernel variants found no group")
+def table_rows(section):
+    """The rows of a comparison table as (error, value, variant, numbers): the numbers are the
+    error at fixed n, the wall time there and the error at fixed cost, as shown."""
+    rows, err = [], None
+    for tr in re.findall(r"<tr[^>]*>(.*?)</tr>", section)[1:]:
+        m = re.match(r"<td rowspan=\d+>([^<]*)<br>", tr)
+        if m:
+            err = html.unescape(m.group(1))
+        cells = re.findall(r"<td class='(?:nw|var)'>([^<]*)</td>", tr)
+        nums = re.findall(r"<td class='num'>(?:<b>)?([^<]*)", tr)
+        rows.append((err, html.unescape(cells[0]), html.unescape(cells[1]), nums[:3]))
+    return rows
+
+
+def near(shown, want, rel=2e-3):
+    try:
+        return want is not None and abs(float(shown) / want - 1) < rel
+    except ValueError:
+        return False
+
+
+def comparison_checks(out, sweeps, key):
+    """Each case with a comparison in key shows it (anchor #<key>s, a link from the index): per
+    group a figure, then a table with a row per error and member. Checked against the sweeps'
+    own numbers: the members and their order (the base first; a variant without a like-for-like
+    sibling paired with the nearest sweep, which the group says is not like for like, naming the
+    parameters that differ); per error the error and the wall time at the finest level every
+    member ran, and the error at the fixed cost, interpolated log-log on each member's
+    error-against-wall-time curve at the cheapest curve's end, recomputed here; the group's
+    sentence gives each member's error ratio to the base's and the ratio of their wall times."""
+    groups, lone = compared_groups(sweeps, key)
+    with_section = {case for case, *_ in groups} | {case for case, _ in lone}
+    expect(groups or lone or not any(f"{key}=" in x for s in sweeps for x in s["settings"]), f"{key} variants found no group")
     index = (out / "index.html").read_text()
     for case in {s["case"] for s in sweeps}:
         text = (out / f"case-{slug(case)}.html").read_text()
-        expect(("id='kernels'" in text) == (case in with_kernels), f"{case}: kernel comparison shown {'id=' in text}, expected {case in with_kernels}")
-        expect((f"case-{slug(case)}.html#kernels" in index) == (case in with_kernels), f"index: kernel link of {case}")
-    for (case, label), members in groups.items():
+        shown = f"id='{key}s'" in text
+        expect(shown == (case in with_section), f"{case}: {key} comparison shown {shown}, expected {case in with_section}")
+        linked = f"case-{slug(case)}.html#{key}s" in index
+        expect(linked == any(c == case for c, *_ in groups), f"index: {key} comparison link of {case} {linked}")
+    for case, variant in lone:
         text = (out / f"case-{slug(case)}.html").read_text()
-        section = text[text.find("id='kernels'"):text.find("<h2>Outcome per error</h2>")]
-        stem = out / "fig" / slug(case) / f"kernels_{slug(label)}"
-        expect(file_of(stem, "png").is_file() and file_of(stem, "pdf").is_file(), f"{case} {label}: no kernel figure")
-        expect(section.find("<figure>") < section.find("<table>"), f"{case}: the kernel table before its figure")
-        for err in [r["error"] for r in next(iter(members.values()))["rows"]]:
-            curves = {}
-            for k, s in members.items():
-                curves[k] = sorted((r["wall_time_s"], r["errors"][err], n) for n, r in zip(s["levels"], s["runs"]) if err in r["errors"])
-            cost = min(c[-1][0] for c in curves.values())
-            for k, c in curves.items():
+        expect(f"Not compared: {html.escape(variant, quote=True)}." in text, f"{case}: {variant} has nothing to compare with, unsaid")
+    for case, label, members, nearest in groups:
+        text = (out / f"case-{slug(case)}.html").read_text()
+        start = text.find(f"<h3 id='{key}s-{slug(label)}'>")
+        expect(start > 0, f"{case} {label}: no {key} group")
+        section = text[start:text.find("</table>", start)]  # heading, sentence, figure, table
+        stem = out / "fig" / slug(case) / f"{key}s_{slug(label)}"
+        expect(file_of(stem, "png").is_file() and file_of(stem, "pdf").is_file(), f"{case} {label}: no {key} figure")
+        expect(0 < section.find("<figure>") < section.find("<table>"), f"{case} {label}: the {key} table before its figure")
+        base_value, base = members[0]
+        for value, s in members[1:]:
+            diff = param_differences(base, s, key)
+            if nearest or diff:
+                expect("Not like for like" in section and all(re.search(rf"\b{re.escape(d)} \(", section) for d in diff),
+                       f"{case} {label}: {s['variant']} against {base['variant']} does not say that {diff} differ")
+            else:
+                expect(f"Like for like: the members differ in {key} alone." in section, f"{case} {label}: like for like unsaid")
+        rows = table_rows(section)
+        errors = [r["error"] for r in base["rows"] if all(any(x["error"] == r["error"] for x in s["rows"]) for _, s in members)]
+        expect([(err, v, s["variant"]) for err in errors for v, s in members] == [r[:3] for r in rows],
+               f"{case} {label}: table rows {[r[:3] for r in rows]}, expected {[(err, v, s['variant']) for err in errors for v, s in members]}")
+        for err in errors:
+            curves = {v: [(n, r["wall_time_s"], r["errors"][err]) for n, r in zip(s["levels"], s["runs"]) if r["errors"].get(err, 0) > 0]
+                      for v, s in members}
+            n_fixed = max(set.intersection(*({n for n, _, _ in c} for c in curves.values())))
+            cost = min(max(t for _, t, _ in c) for c in curves.values())
+            got = {r[1]: r[3] for r in rows if r[0] == err}
+            at_n = {}
+            for v, c in curves.items():
+                at_n[v] = next((t, y) for n, t, y in c if n == n_fixed)
                 want = None
-                for (t0, y0, _), (t1, y1, _) in zip(c, c[1:]):
+                for (_, t0, y0), (_, t1, y1) in zip(c, c[1:]):
                     if t0 <= cost <= t1:
                         want = math.exp(math.log(y0) + (math.log(y1) - math.log(y0)) * math.log(cost / t0) / math.log(t1 / t0))
                         break
-                row = re.search(rf"<td class='nw'>{re.escape(k)}</td>(.*?)</tr>", section)
-                cells = re.findall(r"<td class='num'>(?:<b>)?([^<]*)", row.group(1)) if row else []
-                expect(want is not None and len(cells) >= 3 and abs(float(cells[2]) / want - 1) < 1e-3,
-                       f"{case} {label} {err} {k}: error at fixed cost {cells[2:3]}, recomputed {want}")
+                cells = got.get(v, [])
+                expect(len(cells) == 3 and near(cells[0], at_n[v][1]) and near(cells[1], at_n[v][0], 5e-3) and near(cells[2], want),
+                       f"{case} {label} {err} {v}: at n = {n_fixed}, its wall time, at fixed cost {cells}; the sweep's "
+                       f"{at_n[v][1]:.4g}, {at_n[v][0]:.3g}, recomputed {want}")
+            for v, _ in members[1:]:
+                ratio, wall = at_n[v][1] / at_n[base_value][1], at_n[v][0] / at_n[base_value][0]
+                said = f"{err} {ratio:.2g}×"
+                expect(said in section and f"at {wall:.2g}× its wall time" in section,
+                       f"{case} {label}: the sentence lacks '{said}' or the wall time ratio {wall:.2g} of {v} to {base_value}")
+
+
+def alone_checks(results, work):
+    """A scheme variant whose case has no sweep of another scheme is shown as not compared (a
+    results folder holding it alone), not dropped in silence."""
+    variant = next((f.parent for f in sorted(results.glob("**/sweep.json")) if "scheme=" in f.parent.name), None)
+    if variant is None:
+        return
+    alone = work / "alone"
+    shutil.copytree(variant, alone / variant.relative_to(results))
+    res = report(alone, work / "alone-report")
+    sweeps = [json.loads(f.read_text()) for f in sorted(alone.glob("**/sweep.json"))]
+    expect(res.returncode == 0 and res.stderr == "", f"report of a lone scheme variant: exit {res.returncode} {res.stderr}")
+    expect(compared_groups(sweeps, "scheme")[1], "the lone scheme variant found a sibling")
+    comparison_checks(work / "alone-report" / "t", sweeps, "scheme")
 
 
 def bundle_checks(results, work, sweeps):
@@ -186,9 +291,10 @@ def bundle_checks(results, work, sweeps):
     expect(coloured == known, f"the supplement's tables colour {coloured} known failures of {known}")
     m = re.search(r"; (\d+) figures\)", res.stdout)
     expect(m and int(m.group(1)) == len(included), f"supplement includes {len(included)} figures of {m and m.group(1)}")
-    for case, label in kernel_groups(sweeps):
-        expect(f"tab:supp-kernels-{slug(case)}-{slug(label)}" in supp and f"{slug(case)}_kernels_{slug(label)}".replace(".", "p") in supp,
-               f"the supplement lacks the kernel table or figure of {case} {label}")
+    for key in KEYS:
+        for case, label, _, _ in compared_groups(sweeps, key)[0]:
+            expect(f"tab:supp-{key}s-{slug(case)}-{slug(label)}" in supp and f"{slug(case)}_{key}s_{slug(label)}".replace(".", "p") in supp,
+                   f"the supplement lacks the {key} table or figure of {case} {label}")
 
 
 def main():
@@ -246,7 +352,9 @@ def main():
     for png in out.glob("fig/**/*.png"):
         expect(png.with_name(png.name[:-4] + ".pdf").is_file(), f"{png.name} has no PDF")
     distinct_figures(out, res.stdout)
-    kernel_checks(out, sweeps)
+    for key in KEYS:
+        comparison_checks(out, sweeps, key)
+    alone_checks(results, work)
     if mutants:
         km = json.loads(Path(mutants).read_text())
         killed = sum(bool(m["killed"]) for m in km["mutants"])

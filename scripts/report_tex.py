@@ -17,7 +17,7 @@ import tarfile
 from pathlib import Path
 
 import report_bib
-import report_kernels
+import report_compare
 import report_paper
 from report_data import (claim_notes, claim_tex, f2, file_of, fmt, is_dirty, num, one_sided, provenances, row_note,
                          slug, sweep_wide_failures, threads_text)
@@ -27,6 +27,7 @@ FAIL = r"\textbf{FAIL}"
 # A list whose bullet is math's (cmsy, Type 1): LaTeX's \textbullet comes from the TS1 encoding,
 # which Computer Modern has as a bitmap (Type 3) font only, and journal preflight checks reject those.
 ITEMIZE = r"\begin{itemize}\small\renewcommand{\labelitemi}{$\bullet$}"
+COMPARISONS = {f"{key}s": key for key in report_compare.PARAMETERS}  # the figures report.py makes of report_compare, by kind
 FLOATS_PER_FLUSH = 8  # \clearpage after this many figure floats: LaTeX holds at most 18 unplaced floats
 
 
@@ -143,32 +144,41 @@ def provenance_text(sweeps, tier):
             r"(provenance and tool versions: supplement). ")
 
 
-def kernel_tables(case, ss):
-    """Per group of variants differing only in the kernel (report_kernels.py), a table: per error
-    and kernel the error at the fixed n, its wall time, the error at the fixed cost, the observed
-    order and the outcome."""
+def comparison_tables(case, ss, key):
+    """Per group of variants compared in the parameter key (report_compare.py): what the others
+    change against the first and whether the group is like for like, then a table: per error and
+    member the error at the fixed n, its wall time, the error at the fixed cost, the observed order
+    and the outcome."""
     t = []
-    for label, members in report_kernels.groups(ss):
+    for g in report_compare.groups(ss, key):
         rows = []
-        for err in report_kernels.errors(members):
-            n_fixed, t_fixed, comp = report_kernels.comparison(members, err)
+        errs = report_compare.errors(g.members)
+        for err in errs:
+            n_fixed, t_fixed, comp = report_compare.comparison(g.members, err)
             for j, r in enumerate(comp):
                 head = (ragged(f"{tex(err)} ($n={fmt(n_fixed, 'g', '--')}$, {fmt(t_fixed, '.3g', '--')} s)") if j == 0 else "")
-                rows.append(f"{head} & {prose(r['kernel'])} & {sci(r['at_n'])} & {fmt(r['wall_at_n'], '.3g', '--')} & {sci(r['at_cost'])} & "
-                            f"{order_tex(r)} & {outcome_tex(r)} \\tabularnewline")
-            rows[-1] += r" \midrule" if err != report_kernels.errors(members)[-1] else ""
-        t += long_table("error (fixed $n$, fixed cost) & kernel & at fixed $n$ & wall s & at fixed cost & observed & outcome",
-                        r"p{2.6cm} l l l l l l", rows,
-                        f"{prose(case)} ({prose(label)}): the kernels compared. Fixed $n$: the finest level every kernel ran; fixed cost: "
-                        "each kernel's error interpolated (log error linear in log wall time) at the largest wall time every "
-                        "kernel's sweep reached; observed order of each kernel's sweep.", f"tab:supp-kernels-{slug(case)}-{slug(label)}")
+                rows.append(f"{head} & {ragged(prose(r['value']))} & {ragged(prose(r['variant']))} & {sci(r['at_n'])} & "
+                            f"{fmt(r['wall_at_n'], '.3g', '--')} & {sci(r['at_cost'])} & {order_tex(r)} & {outcome_tex(r)} \\tabularnewline")
+            rows[-1] += r" \midrule" if err != errs[-1] else ""
+        t.append(f"{prose(case)}, {prose(key)}s compared ({prose(report_compare.title(g))}): {prose(report_compare.unlike_text(g))} "
+                 + " ".join(report_compare.effects(g, prose, error_name)))
+        t += long_table(f"error (fixed $n$, fixed cost) & {prose(key)} & variant & at fixed $n$ & wall s & at fixed cost & observed & outcome",
+                        r"p{2.4cm} p{1.9cm} p{2.0cm} l l l l l", rows,
+                        f"{prose(case)} ({prose(report_compare.title(g))}): the {prose(key)}s compared"
+                        + (" (not like for like: see the text)" if g.nearest or any(g.differs) else "")
+                        + f". Fixed $n$: the finest level every {prose(key)} ran; fixed cost: each {prose(key)}'s error "
+                        "interpolated (log error linear in log wall time) at the largest wall time every sweep reached; "
+                        f"observed order of each sweep.", f"tab:supp-{key}s-{slug(case)}-{slug(g.label)}")
+    lone = report_compare.alone_text(ss, key)
+    if lone:
+        t.append(prose(lone))
     return t
 
 
 def figure_order(mine):
     """A case's figures in the order a reader wants them: per variant its profiles and convergence,
-    then error against wall time, then the kernel comparisons."""
-    rank = {"run": 0, "convergence": 0, "wall": 1, "kernels": 2}
+    then error against wall time, then the comparisons (kernels, then schemes)."""
+    rank = {"run": 0, "convergence": 0, "wall": 1} | {f"{key}s": 2 + j for j, key in enumerate(report_compare.PARAMETERS)}
     return sorted(mine, key=lambda m: rank.get(m[3], 3))  # stable: the variants keep their order
 
 
@@ -176,11 +186,12 @@ def figure_caption(case, ss, m):
     _, s, name, kind, _ = m
     if kind == "convergence":
         return convergence_caption(case, s, next(r for r in s["rows"] if r["error"] == name))
-    if kind == "kernels":
-        members = next(mem for label, mem in report_kernels.groups(ss) if label == name)
-        return (f"{prose(case)} ({prose(name)}): kernels {prose(', '.join(k for k, _ in members))} compared, every error against "
-                r"$n$ (top) and against the wall time of each run (bottom); dotted: the fixed resolution and the fixed cost "
-                f"of Table~\\ref{{tab:supp-kernels-{slug(case)}-{slug(name)}}}.")
+    if kind in COMPARISONS:
+        key = COMPARISONS[kind]
+        g = next(g for g in report_compare.groups(ss, key) if g.label == name)
+        return (f"{prose(case)} ({prose(report_compare.title(g))}): {prose(key)}s compared, every error "
+                r"against $n$ (top) and against the wall time of each run (bottom); dotted: the fixed resolution and the fixed "
+                f"cost of Table~\\ref{{tab:supp-{kind}-{slug(case)}-{slug(name)}}}.")
     if kind == "wall":
         d = next((v["error_defs"][name] for v in ss if name in v.get("error_defs", {})), "")
         return (f"{prose(case)}: {tex(name)}" + (f", {tex(d)}," if d else "") + " against the wall time of each run, one line per "
@@ -205,7 +216,7 @@ def case_figures(case, ss, made, figs):
         row = []
 
     for m in figure_order([m for m in made if m[0] == case]):
-        if m[3] == "kernels":
+        if m[3] in COMPARISONS:
             flush()
             row = [m]
             flush()
@@ -255,7 +266,8 @@ def case_section(case, ss, made, figs):
         t.append(r"No error carries an order: this case is judged by its checks alone (Table~"
                  f"\\ref{{tab:supp-checks-{slug(case)}}}).")
     t += checks_table(case, ss)
-    t += kernel_tables(case, ss)
+    for key in report_compare.PARAMETERS:
+        t += comparison_tables(case, ss, key)
     drift = [(s, c) for s in ss for c in s["checks"] if c.get("kind") == "drift"]
     bad = [f"{s['variant']}: {c['name']}" for s, c in drift if not c["pass"]]
     wide = [f"{s['variant']}: {n}" for s in ss for n in sweep_wide_failures(s)]
