@@ -127,7 +127,7 @@ const Registration reg{Case{
           return OrderClaims{{"L1_rho", known_failure(first,
                                                       "the shell behind the blast sits on a lattice whose sums are off at "
                                                       "every n (h by (53) drifts from (50) through the sixfold "
-                                                      "compression; at hfact 2.4 the sums are off anyway): its density "
+                                                      "compression; at a hfact where the 1D sums are not exact they are off anyway): its density "
                                                       "{extra.rho_star_right_mean} against the exact "
                                                       "{extra.rho_star_right}; L1 {L1_rho} at {levels}",
                                                       "preset=toro3,energy=38,hfact=2,scheme=chapter")}};
