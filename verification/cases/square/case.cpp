@@ -18,8 +18,11 @@
 // rounds the square's corners and drives the velocity noise. The blip's size does not fall with h,
 // and v_rms stays level: a known failure, shown by the smooth step of width 0.05 (lattice=one,
 // width=0.05), where the pressure is uniform to O(h^2) and v_rms falls (docs/cases/square.md
-// holds the measured series). L1_rho (the smearing over h) and misfit (the
-// displacement of the edge's particles, confined to the layer of width h) converge at first order.
+// holds the measured series). L1_rho (the smearing over h) and misfit (the displacement of the
+// edge's particles, confined to the layer of width h) converge at first order until the tension
+// has rounded the corners into a shape whose size does not shrink with h: at t_end = 0.25 they do
+// on n = 32..256, at t_end = 1 they level off from n = 64 (known failures; the smooth step verifies
+// L1_rho, t_end = 0.25 misfit).
 #include <cmath>
 #include <map>
 #include <string>
@@ -85,17 +88,22 @@ void validate(const Params& p) {
 // Whether the parameters are the smooth step's (the experiment that converges).
 bool smooth(const Params& p) { return p.real("width") > 0.0; }
 
-// The errors at the coarsest quick level of each catalogue variant (t_end = 1, C = 0.3), on 2
-// cores: bounds at 1.5 times these hold at every level where the error falls with n. v_rms of the
-// sharp step does not fall: its value is the largest measured on the quick levels instead. The
-// series per variant: docs/cases/square.md.
+// Whether the run ends before the contact's spurious surface tension has rounded the corners:
+// a quarter of the end time's two sound crossings (the experiment whose edge errors converge).
+bool early(const Params& p) { return p.real("t_end") <= 0.25; }
+
+// Drift baselines (the code's own earlier output): per catalogue variant and error the largest
+// value measured on its levels of every tier (t_end = 1 unless set, C = 0.3, 2 cores; the errors
+// that fall are largest at the coarsest level, the sharp step's do not fall), bounds at 1.5 times
+// these. The series: docs/cases/square.md.
 std::map<std::string, double> measured(const Params& p) {
-  if (smooth(p)) return {{"L1_rho", 1.256e-2}, {"v_rms", 2.832e-3}};
+  if (smooth(p)) return {{"L1_rho", 1.256e-2}, {"v_rms", 3.128e-3}};
+  if (early(p)) return {{"L1_rho", 2.603e-2}, {"misfit", 2.149e-2}, {"v_rms", 8.342e-3}};
   const std::string k = p.text("kernel");
-  if (k == "quintic_spline") return {{"L1_rho", 4.095e-2}, {"misfit", 3.114e-2}, {"v_rms", 2.944e-3}};
-  if (k == "wendland_c4") return {{"L1_rho", 3.905e-2}, {"misfit", 3.220e-2}, {"v_rms", 3.123e-3}};
-  if (p.real("v_adv") != 0.0) return {{"L1_rho", 4.867e-2}, {"misfit", 5.180e-2}, {"v_rms", 2.934e-3}};
-  return {{"L1_rho", 4.867e-2}, {"misfit", 5.180e-2}, {"v_rms", 2.533e-3}};
+  if (k == "quintic_spline") return {{"L1_rho", 2.111e-2}, {"misfit", 3.089e-2}, {"v_rms", 3.392e-3}};
+  if (k == "wendland_c4") return {{"L1_rho", 2.285e-2}, {"misfit", 3.247e-2}, {"v_rms", 3.184e-3}};
+  if (p.real("v_adv") != 0.0) return {{"L1_rho", 2.689e-2}, {"misfit", 3.296e-2}, {"v_rms", 3.634e-3}};
+  return {{"L1_rho", 2.689e-2}, {"misfit", 3.285e-2}, {"v_rms", 4.990e-3}};
 }
 
 std::vector<Check> gates(const Sweep& s) {
@@ -104,8 +112,8 @@ std::vector<Check> gates(const Sweep& s) {
   return radial::per_level(s, [&](const std::string& level, const Result& r, std::vector<Check>& c) {
     for (const auto& [e, v] : bound)
       c.push_back({level + "_" + e, r.errors.at(e), 0.0, 1.5 * v,
-                   e + " below 1.5 times its value measured at the variant's coarsest quick level (square.cpp)",
-                   Check::Kind::verification, e});
+                   e + " below 1.5 times the largest value measured on the variant's levels (square/case.cpp)",
+                   Check::Kind::drift, e});
     // The phase tag (square/errors.hpp) reads u against sqrt(u_in u_out), a factor 2 from either
     // phase's u at contrast 4: it holds while no particle's u moves by a third of its own (measured
     // at most 0.084). The smooth step has u between the phases' by construction: no check.
@@ -118,9 +126,12 @@ std::vector<Check> gates(const Sweep& s) {
 OrderClaims orders(const Params& p) {
   OrderClaims c;
   if (smooth(p)) {
-    // Bands: L1_rho measured local orders 1.74, 1.84 (n = 32..128), band 0.3; v_rms a standard
-    // fit of 2.30 +- 0.75, band 1. The fall of v_rms's local order below 2 at n = 128 is not
-    // explained (docs/cases/square.md).
+    // Bands: L1_rho measured local orders 1.74, 1.84, 1.67 (n = 32..256), band 0.3. v_rms's
+    // claim (band 1, wider than the rule allows without a derivation) stays provisional: its local
+    // orders are 3.56, 1.00, 1.34 on n = 32..256, where h falls from 1.5 to 0.19 widths. The
+    // velocity is a box-scale acoustic pattern, not particle noise, and does not change with the
+    // time step (C = 0.15) or the h solve's tolerance (1e-8): the levels that show the asymptotic
+    // second order lie beyond n = 256 (docs/cases/square.md).
     c["L1_rho"] = {2.0, 0.3, "a smooth density at uniform pressure: the summation density (27) errs by O(h^2 rho'') "
                              "with a symmetric kernel: second order"};
     c["v_rms"] = {3.0, 1.0, "the pressure (gamma - 1) rho u errs by the density's O(h^2 rho''), and the velocity it "
@@ -129,25 +140,47 @@ OrderClaims orders(const Params& p) {
                             "that steepens the local order (band: 2 to 4)"};
     return c;
   }
-  c["L1_rho"] = {1.0, 0.3, "the summation density (27) spreads the step over the kernel's support h ~ 1/n along the "
-                           "edges (an L1 error of the jump times the perimeter times h): first order"};
-  // Band 0.4: measured 0.66 (n = 16, 32); on the standard levels a fit of 0.49 +- 0.09, inside the
-  // band widened by two standard errors, with a falling local order (docs/cases/square.md): the
-  // corners' rounding may approach a size of its own.
-  c["misfit"] = {1.0, 0.4, "the edge's particles move within the layer of width h ~ 1/n where the pressure blip acts: "
-                           "the area they leave on the wrong side of the edge is the perimeter times O(h): first order"};
+  const OrderClaim l1{1.0, 0.3, "the summation density (27) spreads the step over the kernel's support h ~ 1/n along "
+                                "the edges (an L1 error of the jump times the perimeter times h): first order"};
+  const OrderClaim misfit{1.0, 0.3, "the edge's particles move within the layer of width h ~ 1/n where the pressure blip "
+                                    "acts: the area they leave on the wrong side of the edge is the perimeter times O(h): "
+                                    "first order"};
+  const OrderClaim v_rms{2.0, 0.3, "a flow at uniform pressure whose forces err at a smooth flow's order: second order"};
+  // The velocity noise: the blip's O(p) jump over a layer of width h whatever n.
   c["v_rms"] = known_failure(
-      2.0, 0.5,
+      v_rms,
       "the density-energy form's spurious surface tension at the sharp contact: the summation density (27) smooths the "
       "step over h while u keeps it, so the pressure (gamma - 1) rho u jumps by O(p) across a layer of width h whatever "
       "n (Saitoh & Makino 2013; Hopkins 2015); the noise it drives does not fall at a smooth flow's order: v_rms = "
       "{v_rms} of c_out at {levels}, observed order {order.v_rms}",
       "lattice=one,width=0.05");
+  if (early(p)) {
+    // Before the tension has rounded the corners, the smearing over h and the edge's layer are
+    // all there is: first order (L1_rho and misfit local orders 0.90, 0.94 and 0.95, 0.87 on
+    // n = 32..128 at t_end = 0.25).
+    c["L1_rho"] = l1;
+    c["misfit"] = misfit;
+    return c;
+  }
+  // The tension acts over time: by t = 1 it has rounded the corners into a shape of its own,
+  // whose size does not shrink with h, and both errors level off (local orders from n = 64 to
+  // 128 of 0.33 to 0.41 for L1_rho; misfit rises). The smooth step (no blip) verifies L1_rho; the
+  // same square at t_end = 0.25 (before the tension has acted) verifies misfit.
+  c["L1_rho"] = known_failure(l1,
+                              "the contact's spurious surface tension rounds the square's corners into a shape whose size "
+                              "does not shrink with h: L1_rho {L1_rho} at {levels}, observed order {order.L1_rho}",
+                              "lattice=one,width=0.05");
+  c["misfit"] = known_failure(misfit,
+                              "the contact's spurious surface tension rounds the square's corners into a shape whose size "
+                              "does not shrink with h: misfit {misfit} at {levels}, observed order {order.misfit}",
+                              "t_end=0.25");
   return c;
 }
 
-const Levels levels = {.quick = {16, 32}, .standard = {16, 32, 64}, .full = {16, 32, 64, 128}};
-
+// The sharp step's edge errors level off from n = 64 (the tension's rounding): every tier runs it
+// from 32 to 128 and quick at 48, 96, where the known failures show (L1_rho's local order 0.18 to
+// 0.56 there). The default adds 256 in the full tier.
+const Levels levels = {.quick = {48, 96}, .standard = {32, 64, 128}, .full = {32, 64, 128, 256}};
 const Registration reg{Case{
     .name = "square",
     .summary = "isobaric square (2D) / cube (3D), density contrast 4 in pressure equilibrium: velocity noise, "
@@ -177,15 +210,16 @@ const Registration reg{Case{
     .error_defs = square::error_defs,
     .variants = {{},
                  {"lattice=one", "width=0.05"},
+                 {"t_end=0.25"},
                  {"v_adv=0.3"},
                  {"kernel=quintic_spline"},
                  {"kernel=wendland_c4"}},
     .levels_for = [](const Params& p) {
       if (smooth(p)) return Levels{.quick = {32, 64}, .standard = {32, 64, 128}, .full = {32, 64, 128, 256}};
-      // The carried square and the other kernels: quick at n = 16, 24 (the gate's CPU budget; their
-      // orders there lie inside the bands, docs/cases/square.md).
+      if (early(p)) return Levels{.quick = {32, 64}, .standard = {32, 64, 128}, .full = {32, 64, 128, 256}};
+      // The carried square and the other kernels show the same failure by n = 128.
       if (p.real("v_adv") != 0.0 || p.text("kernel") != "cubic_spline")
-        return Levels{.quick = {16, 24}, .standard = {16, 32, 64}, .full = {16, 32, 64, 128}};
+        return Levels{.quick = {48, 96}, .standard = {32, 64, 128}, .full = {32, 64, 128}};
       return levels;
     },
     .validate = validate,
