@@ -96,9 +96,10 @@ bool converges(const Params& p) { return wide(p) && p.text("kernel") != "cubic_s
 // falling towards the noise's floor, not at first order. The noise is the cause: with alpha_max 0
 // (no viscosity at all) L1_v is 0.1994, 0.1584, 0.1254 (order 0.33), the switch's run by n = 64;
 // without the conduction (alpha_u = 0, in a build made for the test: the scheme has no option
-// for it) 0.2282, 0.1556, 0.1182, the same. So the first-order claim is a known failure, as for the default; the case runs this
-// scheme with the cubic spline only (extreme::evolve_gas_kernel), so its experiment is the
-// chapter's forms with the Wendland C4 kernel, whose many neighbours lower the noise.
+// for it) 0.2282, 0.1556, 0.1182, the same. So the first-order claim is a known failure, as for
+// the default; the case runs this scheme with the cubic spline only (extreme::evolve_gas_kernel),
+// so its experiment is the chapter's forms with the Wendland C4 kernel, whose many neighbours
+// lower the noise.
 OrderClaims gresho_orders(const Params& p) {
   OrderClaims c;
   const std::string first = "the artificial viscosity's smearing of the ring's shear, nu ~ alpha c_s h at fixed hfact: "
