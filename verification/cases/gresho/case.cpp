@@ -1,7 +1,9 @@
 // Case `gresho`: the Gresho-Chan triangular vortex in 2D (reference/gresho), a stationary rotating
 // flow held by its pressure gradient, in the periodic unit box with the vortex at its centre
 // (gresho/setup.hpp: a square lattice). Summation density (27), ideal gas (gamma 5/3), Euler (23),
-// energy (38), leapfrog, artificial viscosity (44)-(48) with constant alpha, h by (50).
+// energy (38), leapfrog, artificial viscosity (44)-(48) with constant alpha, h by (50); or, with
+// scheme=gradh_switches, the grad-h scheme with the viscosity switch and artificial conduction
+// (sph/schemes/gradh_switches.hpp, the cubic spline only).
 //
 // The flow is stationary, so every error is the method's. Two sources, with different limits:
 // - the artificial viscosity (45): a constant alpha acts on the ring's shear (the rigid core has
@@ -70,6 +72,8 @@ void validate(const Params& p) {
                      " particles, above max_particles (raise it)");
   if (p.text("kernel") != "cubic_spline" && (p.text("hmode") == "rate53" || p.text("energy") != "38"))
     throw InputError("gresho: kernel=" + p.text("kernel") + " runs with hmode=iterate50 or fixed, energy=38 only");
+  if (p.text("kernel") != "cubic_spline" && p.text("scheme") != sph::ChapterScheme::name)
+    throw InputError("gresho: kernel=" + p.text("kernel") + " runs with scheme=" + sph::ChapterScheme::name + " only");
 }
 
 // The experiment: the catalogue variant that converges (Wendland C4, a wider support, weak viscosity).
@@ -82,11 +86,37 @@ bool converges(const Params& p) { return wide(p) && p.text("kernel") != "cubic_s
 
 // Band 0.3: the converging variant measured local orders 0.74, 0.85 on n = 16, 32, 64, rising
 // towards 1 as the viscosity's O(h) share overtakes the E0 noise's (a fifth of L1_v at n = 64).
+//
+// scheme=gradh_switches (grad-h, the Cullen & Dehnen switch, conduction; the cubic spline at
+// hfact 2.4): the switch's limiter keeps alpha low in the ring's shear, so the viscosity no longer
+// smears the vortex (peak v_phi 0.41, 0.58, 0.63 at n = 16, 32, 64 against the default's 0.21,
+// 0.37, 0.44), and nothing damps the E0 noise either: mean |v_r| 0.081, 0.073, 0.063, three times
+// the default's. L1_v 0.2465, 0.1604, 0.1204 (n = 24, 48: 0.1852, 0.1302), local orders 0.62,
+// 0.41 (24 -> 48: 0.51), fit 0.52 +- 0.06: below the default's L1_v by 30 % at n = 64, but
+// falling towards the noise's floor, not at first order. The noise is the cause: with alpha_max 0
+// (no viscosity at all) L1_v is 0.1994, 0.1584, 0.1254 (order 0.33), the switch's run by n = 64;
+// without the conduction (alpha_u = 0, in a build made for the test: the scheme has no option
+// for it) 0.2282, 0.1556, 0.1182, the same. So the first-order claim is a known failure, as for
+// the default; the case runs this scheme with the cubic spline only (extreme::evolve_gas_kernel),
+// so its experiment is the chapter's forms with the Wendland C4 kernel, whose many neighbours
+// lower the noise.
 OrderClaims gresho_orders(const Params& p) {
   OrderClaims c;
   const std::string first = "the artificial viscosity's smearing of the ring's shear, nu ~ alpha c_s h at fixed hfact: "
                             "first order in h ~ 1/n while the zeroth-order (E0) force noise of the disordered particles "
                             "stays below it";
+  if (p.text("scheme") != sph::ChapterScheme::name) {
+    c["L1_v"] = known_failure(
+        1.0, 0.3,
+        "the E0 error of the grad-h momentum equation: the ring's shear disorders the lattice, and at fixed hfact = "
+        "{extra.hfact} (the cubic spline's few neighbours) the pressure p0 drives force noise that does not fall with h; "
+        "the switch keeps alpha low in the shear (peak v_phi {extra.v_phi_peak}, exact 1), so nothing damps the noise "
+        "(mean |v_r| {extra.L1_v_r}, exact 0): L1_v {L1_v} at {levels}, order {order.L1_v}, tending to the noise's "
+        "floor; this scheme runs with the cubic spline only, and the chapter's forms with the Wendland C4 kernel's many "
+        "neighbours converge",
+        converging);
+    return c;
+  }
   if (converges(p)) {
     c["L1_v"] = OrderClaim{1.0, 0.3, first + " (many neighbours with a kernel that does not pair there, Dehnen & Aly 2012)"};
     return c;
@@ -111,10 +141,12 @@ OrderClaims gresho_orders(const Params& p) {
   return c;
 }
 
-// L1_v measured at n = 16, the coarsest level of every tier (one thread; the noise is chaotic, so
-// round-off moves it between instruction-set paths): bounds at 1.2 times these (sedov's margin)
-// at every level, which the finer levels' smaller errors meet.
+// L1_v measured at n = 16, the coarsest level of the standard and full tiers, below the quick
+// tier's 24 where a variant starts there (one thread; the noise is chaotic, so round-off moves
+// it between instruction-set paths): bounds at 1.2 times these (sedov's margin) at every level,
+// which the finer levels' smaller errors meet.
 double l1_measured(const Params& p) {
+  if (p.text("scheme") != sph::ChapterScheme::name) return 0.2465;  // gradh_switches
   if (wide(p)) {
     const std::string k = p.text("kernel");
     if (k == "wendland_c2") return 0.1675;
@@ -136,9 +168,11 @@ std::vector<Check> gates(const Sweep& s) {
     c.push_back({level + "_equilibrium", r.extra.value("equilibrium_error", 1.0), 0.0, 1e-10,
                  "the initial pressure in radial equilibrium with v_phi (closed form against quadrature)",
                  Check::Kind::verification, "L1_v"});
+    // The bound is this code's own earlier output (a drift check); the equilibrium above and the
+    // order claims are the verification.
     c.push_back({level + "_L1_v", r.errors.at("L1_v"), 0.0, bound,
-                 "L1_v of v_phi at most 1.2 times its value measured at n = 16 (gresho.cpp)",
-                 Check::Kind::verification, "L1_v"});
+                 "L1_v of v_phi at most 1.2 times its value measured at n = 16 (gresho/case.cpp)",
+                 Check::Kind::drift, "L1_v"});
   });
 }
 
@@ -176,8 +210,15 @@ const Registration reg{Case{
                  {"kernel=wendland_c2", "hfact=4.5", "alpha=0.1"},
                  {"kernel=wendland_c6", "hfact=4.5", "alpha=0.1"},
                  {"kernel=quintic_spline", "hfact=4.5", "alpha=0.1"},
-                 {"kernel=cubic_spline", "hfact=4.5", "alpha=0.1"}},
+                 {"kernel=cubic_spline", "hfact=4.5", "alpha=0.1"},
+                 {"scheme=gradh_switches"}},
     .levels_for = [](const Params& p) {
+      // scheme=gradh_switches: its quick order 0.51 on 24, 48 lies clear of the claim's window
+      // (0.62 on 16, 32, at 0.08 from its edge). Standard stops at 48: the scheme costs about
+      // 2.3 times the chapter's a step, and its n = 64 alone 5.4 s of CPU (16, 24, 32, 48: 3.3 s
+      // together; fit 0.58 +- 0.04, clear of the window too). Full as the default's.
+      if (p.text("scheme") != sph::ChapterScheme::name)
+        return Levels{.quick = {24, 48}, .standard = {16, 24, 32, 48}, .full = {16, 32, 64, 128}};
       if (p.real("alpha") == 0.1 && (p.text("kernel") == "cubic_spline" || wide(p)))
         return Levels{.quick = {24, 48}, .standard = {16, 32, 64}, .full = {16, 32, 64, 128}};
       return levels;

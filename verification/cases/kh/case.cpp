@@ -65,6 +65,8 @@ void validate(const Params& p) {
   if (!(t_end >= hi)) throw InputError("kh: t_end must reach t_fit_hi (the fit window)");
   if (p.text("kernel") != "cubic_spline" && (p.text("hmode") == "rate53" || p.text("energy") != "38"))
     throw InputError("kh: kernel=" + p.text("kernel") + " runs with hmode=iterate50 or fixed, energy=38 only");
+  if (p.text("kernel") != "cubic_spline" && p.text("scheme") != sph::ChapterScheme::name)
+    throw InputError("kh: kernel=" + p.text("kernel") + " runs with scheme=" + sph::ChapterScheme::name + " only");
   if (double(n) * n > p.real("max_particles"))
     throw InputError("kh: n = " + std::to_string(n) + " means " + std::to_string(n * n) +
                      " particles, above max_particles (raise it)");
@@ -78,11 +80,12 @@ bool converges(const Params& p) {
 
 // The growth error's largest value measured on the variant's levels of every tier (cubic alpha 1:
 // 1.240 at n = 128, where the rate is negative; alpha 0: 0.798; Wendland C4: 1.184 at n = 32,
-// where M does not yet grow; the series: docs/cases/kh.md); the gate holds each level at 1.5
-// times it. A loose
+// where M does not yet grow; scheme=gradh_switches: 0.607 at n = 64, on its quick and standard
+// levels; the series: docs/cases/kh.md); the gate holds each level at 1.5 times it. A loose
 // bound, which a fault that stops the growth or doubles it on the Wendland variant crosses; the
 // order claim (kh_orders) and the exact check of the measurement (M0) are the verification.
 double growth_measured(const Params& p) {
+  if (p.text("scheme") != sph::ChapterScheme::name) return 0.607;
   if (converges(p)) return 1.184;
   return p.real("alpha") > 0.0 ? 1.240 : 0.798;
 }
@@ -126,11 +129,39 @@ std::vector<Check> gates(const Sweep& s) {
 // smooth set-up of Lecoanet et al. 2016) needs a high-order kernel to resolve the seed and keep
 // spurious modes down, and then converges.
 // Band 0.3 as gresho's: the experiment's measured local orders 0.77, 0.85 on n = 32, 64, 96.
+//
+// scheme=gradh_switches (grad-h, the Cullen & Dehnen switch, conduction; the cubic spline at
+// hfact 2.4): growth errors 0.449, 0.607, 0.299 at n = 32, 64, 96 (rates 4.28 +- 0.24, 1.16,
+// 2.07 against the linear evolution's 2.95), local orders -0.43, 1.75, fit 0.28 +- 0.57; M at
+// t_end is 0.45, 0.88, 1.88 times M(0) (the default's 0.45, 0.63, 0.72; Wendland C4's 0.31,
+// 1.37, 2.45). At n = 96 the mode grows, and its rate's error is the lowest of the catalogue's
+// (default 0.346, Wendland C4 0.490), but at 32 and 64 M decays: the rate at 32 is a fit to
+// noise. The switch is not the cause (with alpha_max 0, no viscosity at all, the rate at n = 64
+// is -0.02), nor is the conduction (without it, in a build made for the test, 0.047, 0.619,
+// 0.329), nor a seed too small for the noise (A = 0.025: the rate at n = 64 is 0.30). What damps
+// the mode is what stops the cubic variants of the chapter's scheme, the E0 error of the sheared
+// lattice at the cubic's few neighbours: the Wendland C4 kernel at hfact 4.5 smooths the layer
+// more and its mode grows. So the first-order claim is a known failure; this scheme runs with the
+// cubic spline only (extreme::evolve_gas_kernel), so the experiment is the chapter's Wendland C4
+// variant.
 OrderClaims kh_orders(const Params& p) {
   OrderClaims c;
   const std::string first = "the kernel's smoothing of the layer (support comparable with its width L) and the "
                             "artificial viscosity's damping, nu ~ alpha c_s h: first order in h ~ 1/n at fixed hfact "
                             "while the zeroth-order (E0) force noise of the sheared lattice stays below them";
+  if (p.text("scheme") != sph::ChapterScheme::name) {
+    c["growth"] = known_failure(
+        1.0, 0.3,
+        "the mode's amplitude M(t_end)/M(0) is {extra.M_end_over_M0} at {levels} (below 1 the mode decays instead of "
+        "growing): the E0 error of the grad-h momentum equation at hfact = {extra.hfact} (the cubic spline's few "
+        "neighbours) damps the seed on the coarser levels, as it does in the chapter's forms; the switch's viscosity and "
+        "the conduction are not the cause (with no viscosity, or no conduction, the mode does not grow there either). "
+        "Growth rates {extra.growth_rate} at {levels} against the linear evolution's {extra.growth_rate_ref}, order "
+        "{order.growth}; this scheme runs with the cubic spline only, and the chapter's forms with the Wendland C4 "
+        "kernel's many neighbours converge",
+        converging);
+    return c;
+  }
   if (converges(p)) {
     c["growth"] = OrderClaim{1.0, 0.3, first + " (a Wendland kernel with many neighbours, Dehnen & Aly 2012)"};
     return c;
@@ -178,7 +209,7 @@ const Registration reg{Case{
     .levels = levels,
     .orders = kh_orders,
     .error_defs = kh::error_defs,
-    .variants = {{}, {"alpha=0"}, {"kernel=wendland_c4", "hfact=4.5", "alpha=0.1"}},
+    .variants = {{}, {"alpha=0"}, {"kernel=wendland_c4", "hfact=4.5", "alpha=0.1"}, {"scheme=gradh_switches"}},
     .validate = validate,
     .run = run,
     .gates = gates,

@@ -23,7 +23,8 @@ inline const std::map<std::string, std::string> error_defs = {
                     "going outwards from R_s/4, through (rho_post + rho_pre(R_s)) / 2"},
     {"swept_mass", "|M_swept - rho0 vol_d(R_s + t)| / (rho0 vol_d(R_s + t)), M_swept = sum_i m_i min(1, max(0, 1 + "
                    "v_i . r_i / |r_i|)): the mass brought to rest, each particle weighted by the share of its unit "
-                   "inflow speed it has lost"},
+                   "inflow speed it has lost; extra swept_outward: sum_i m_i max(0, v_i . r_i / |r_i|) / (rho0 vol_d(R_s + "
+                   "t)), what the weight's clamp at 1 leaves out of the particles moving outwards"},
     {"mismatch", "sphv score's check that a snapshot holds the problem its settings describe (not an error): every "
                  "particles farther than R_s + 2 support radii from the centre and 2 supports inside the outermost "
                  "particle (h, or 3 spacings (m/rho)^(1/d) without h) flow in at v_r = -1 with rho = rho0 (1 + "
@@ -50,10 +51,12 @@ void measure(Result& r, const std::vector<sph::Vec<D>>& x, const std::vector<sph
   // Swept mass: the gas brought to rest against rho0 vol(R_s + t), all the gas that started inside
   // R_s + u0 t. A particle inside the smeared shock counts by the share of the inflow speed it has
   // lost, so the measure moves continuously with the shock instead of a particle at a time.
-  double swept = 0.0;
+  // The mass-weighted outward speed is what the clamp at weight 1 leaves out (post-shock ringing).
+  double swept = 0.0, outward = 0.0;
   for (std::size_t i = 0; i < x.size(); ++i) {
     const double vr = rad[i] > 0.0 ? v[i].dot(x[i]) / rad[i] : 0.0;
     swept += m[i] * std::clamp(1.0 + vr, 0.0, 1.0);
+    outward += m[i] * std::max(vr, 0.0);
   }
   const double swept_exact = ball_volume(D, Rs + t);
   // Shock position: the radius where the binned density falls, going outwards, through the
@@ -68,6 +71,7 @@ void measure(Result& r, const std::vector<sph::Vec<D>>& x, const std::vector<sph
   r.errors = {{"swept_mass", std::abs(swept - swept_exact) / swept_exact}};
   r.functionals = {{"swept_mass", swept}};
   r.extra["shock_front_found"] = front_found;
+  r.extra["swept_outward"] = outward / swept_exact;
   r.extra["rho_peak_binned"] = prof.mean.empty() ? 0.0 : *std::max_element(prof.mean.begin(), prof.mean.end());
   if (front_found) {
     r.errors["rho_post"] = std::abs(rho_mid - rho_post) / rho_post;
