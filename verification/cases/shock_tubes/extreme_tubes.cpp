@@ -155,7 +155,13 @@ const Registration reg{Case{
       if (p.real("hfact") != 2.0) return Levels{.quick = {400, 800, 1600}, .standard = {400, 800, 1600}, .full = {400, 800, 1600, 3200}};
       return Levels{.quick = {400, 800}, .standard = {400, 800, 1600}, .full = {400, 800, 1600, 3200}};
     },
-    .validate = {},
+    // A registered scheme brings its own energy form ((38) or its grad-h form): energy=auto, which
+    // means (41) with the forms, would be silently ignored.
+    .validate = [](const Params& p) {
+      if (p.text("scheme") != "forms" && p.text("energy") != "38")
+        throw InputError("extreme_tubes: scheme=" + p.text("scheme") + " has its own energy form ((38)'s); energy=" +
+                         p.text("energy") + " applies to scheme=forms only: set energy=38");
+    },
     .run = run,
     .gates = gates,
 }};
