@@ -113,7 +113,7 @@ std::vector<Check> gates(const Sweep& s) {
     const double tol = r.extra.value("dim", 2) == 3 ? 0.10 : 0.08;
     c.push_back({level + "_shock_radius", r.errors.at("shock_radius"), 0.0, tol,
                  "R_front within tol of the kernel-smoothed exact front (measured, margin stated in sedov.cpp)",
-                 Check::Kind::verification, "shock_radius"});
+                 Check::Kind::drift, "shock_radius"});
   });
   // The finest level of the sweep.
   const Params p = find_case(s.case_name).parse(s.settings);
