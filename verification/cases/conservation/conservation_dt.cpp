@@ -12,6 +12,7 @@
 
 #include "verification/harness/case.hpp"
 #include "verification/cases/common/measured_bound.hpp"
+#include "verification/cases/common/scheme_param.hpp"
 #include "verification/cases/conservation/catalogue.hpp"
 #include "verification/cases/conservation/scheme_run.hpp"
 #include "verification/harness/sweep.hpp"
@@ -20,12 +21,6 @@ namespace sphv::conservation_dt_case {
 namespace {
 
 conservation::EulerChoice euler_of(const Params& p) { return {p.text("euler"), p.real("lambda")}; }
-
-std::vector<std::string> scheme_choices() {
-  std::vector<std::string> c = {"forms"};
-  for (const auto& s : sph::scheme_names()) c.push_back(s);
-  return c;
-}
 
 Result run(const Params& p) {
   const double t_end = p.real("t_end"), dt = 1.0 / p.integer("n");
@@ -83,10 +78,8 @@ const Registration reg{Case{
                integer_param("res", 12, "particles per blob diameter"),
                choice_param("visc", "0", "artificial viscosity on (1) or off (0)", {"0", "1"}),
                real_param("t_end", 0.4, "end time (the blobs meet at about 0.15)", 0.0),
-               choice_param("scheme", "forms",
-                            "forms: the Euler form and its energy form as a bare scene, fixed h; or a scheme "
-                            "(sph/schemes/) with its own forms and viscosity, h by (50)",
-                            scheme_choices())},
+               forms_or_scheme_param("forms: the Euler form and its energy form as a bare scene, fixed h; or a scheme "
+                                     "(sph/schemes/) with its own forms and viscosity, h by (50)")},
     // dt = 1/100 is pre-asymptotic with viscosity (measured slope 3.5 there). Full adds
     // dt = 1/3200 (the error there, ~2e-7, is still 1e8 above round-off; CPU times:
     // docs/cases/conservation.md).

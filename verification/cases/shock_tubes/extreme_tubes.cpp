@@ -6,6 +6,7 @@
 
 #include "verification/harness/case.hpp"
 #include "verification/cases/common/extreme_hydro.hpp"
+#include "verification/cases/common/scheme_param.hpp"
 #include "verification/harness/sweep.hpp"
 
 namespace sphv::extreme_tubes_case {
@@ -101,9 +102,8 @@ const Registration reg{Case{
                choice_param("preset", "toro3", "toro2 (123, near vacuum), toro3 (left blast), leblanc", {"toro2", "toro3", "leblanc"}),
                choice_param("energy", "auto", "energy form (auto = (41) with Euler (23)) or (38)", {"auto", "38"}),
                real_param("hfact", 2.4, "initial support radius / spacing", 0.0),
-               choice_param("scheme", "forms", "forms: Euler (23) with the energy form above, h by (53); or a scheme "
-                                               "(sph/schemes/) with its own forms and h by (50)",
-                            [] { std::vector<std::string> s = {"forms"}; for (const auto& n : sph::scheme_names()) s.push_back(n); return s; }()),
+               forms_or_scheme_param("forms: Euler (23) with the energy form above, h by (53); or a scheme "
+                                     "(sph/schemes/) with its own forms and h by (50)"),
                real_param("C", 0.3, "Courant number", 0.0),
                integer_param("max_steps", 200000, "step budget (ends with a verdict)")},
     // Two levels in quick, so that CI gates every order claim; toro3 from n = 400, below which its

@@ -8,10 +8,10 @@
 
 #include "sph/hydro/forms.hpp"
 #include "sph/kernel/kernels.hpp"
-#include "sph/schemes/schemes.hpp"
 #include "verification/harness/case.hpp"
 #include "verification/cases/common/hydro_step_params.hpp"
 #include "verification/cases/common/lattice_sums.hpp"
+#include "verification/cases/common/scheme_param.hpp"
 #include "verification/cases/shock_tubes/errors.hpp"
 #include "verification/cases/shock_tubes/snapshots.hpp"
 #include "verification/cases/shock_tubes/tube.hpp"
@@ -232,12 +232,8 @@ std::vector<ParamSpec> params(long n_default, double hfact_default) {
                     "euler=23, energy=auto",
                     sph::kernel_names()),
        integer_param("max_steps", 200000, "step budget (ends with a verdict)")});
-  std::vector<std::string> schemes = {"forms"};
-  for (const auto& name : sph::scheme_names()) schemes.push_back(name);
-  ps.push_back(choice_param("scheme", "forms",
-                            "forms: the density, Euler and energy forms above as a scene, h by (53); or a scheme "
-                            "(sph/schemes/) with its own forms and h by (50), and hfact, alpha, beta",
-                            schemes));
+  ps.push_back(forms_or_scheme_param("forms: the density, Euler and energy forms above as a scene, h by (53); or a "
+                                     "scheme (sph/schemes/) with its own forms and h by (50), and hfact, alpha, beta"));
   return ps;
 }
 
