@@ -285,10 +285,12 @@ const Errors4* measured(const Params& p, int dim) {
 // (3D); at 4 the initial sums are within 0.09 % but the compressed lattice's flux across is off by
 // 1.75 % (2D), 0.46 % (3D), and L1_rho's local orders fall, 0.69 and 0.55 on n = 100..400 (2D);
 // at 6 every sum is within 0.11 % and they rise, 0.73, 0.87, 0.95 on 50..400.
-// 3D: the compressed lattice at hfact 4 is off by 0.46 % across; whether that levels the errors
-// off is not measured, as no affordable 3D level is asymptotic at any hfact (at 6, L1_rho is
-// 4.7e-2, 4.9e-2, 4.4e-2, 3.2e-2 on n = 16, 24, 32, 48: the right state's support radius spans
-// the plateau), so 3D judges the initial lattice only, at 0.1 %, and keeps the former claim.
+// 3D: the compressed lattice at hfact 4 is off by 0.47 % across, and the density and pressure
+// errors bend away from first order late: local orders about 0.75 from 64 to 128, 0.68 and 0.70
+// from 128 to 192. No affordable 3D level is asymptotic at any hfact (at 6, L1_rho is 4.7e-2,
+// 4.9e-2, 4.4e-2, 3.2e-2 on n = 16, 24, 32, 48: the right state's support radius spans the
+// plateau; docs/cases/sod.md), so 3D judges the initial lattice only, at 0.1 %, and keeps the
+// former claim, provisional.
 constexpr double lattice_tolerance = 2e-3;
 bool lattice_floor(const Params& p, int dim) {
   if (dim == 1) return false;
