@@ -153,7 +153,9 @@ const Registration reg{Case{
       if (p.text("preset") == "toro3") return Levels{.quick = {400, 800}, .standard = {200, 400, 800}, .full = {200, 400, 800, 1600}};
       // toro2 levels off from n = 800 at hfact 2.4 (the floor): the known failure needs it in quick.
       if (p.real("hfact") != 2.0) return Levels{.quick = {400, 800, 1600}, .standard = {400, 800, 1600}, .full = {400, 800, 1600, 3200}};
-      return Levels{.quick = {400, 800}, .standard = {400, 800, 1600}, .full = {400, 800, 1600, 3200}};
+      // toro2 at hfact 2: L1 5.512e-3, 3.025e-3, 1.486e-3, 1.073e-3, 5.135e-4 at n = 400..6400, local
+      // orders 0.87, 1.03, 0.47, 1.06: the full tier ends at 6400, past the dip from 1600 to 3200.
+      return Levels{.quick = {400, 800}, .standard = {400, 800, 1600}, .full = {400, 800, 1600, 3200, 6400}};
     },
     // A registered scheme brings its own energy form ((38) or its grad-h form): energy=auto, which
     // means (41) with the forms, would be silently ignored.

@@ -378,11 +378,15 @@ OrderClaims first_order(const Params& p, int dim) {
   else if (p.text("euler") == "22")
     // (22) weighs p_j alone: the force of i on j is not that of j on i, momentum is not conserved,
     // and across the shock the discrete jump conditions are not the exact ones, an error at the
-    // shock that does not vanish with h. The symmetric (23) on the same tube is the experiment.
+    // shock that does not vanish with h. Between contact and shock the same unbalanced forces
+    // drive a velocity noise that grows with n: L1_v 3.27e-2, 1.79e-2, 9.11e-3, 5.79e-3, 8.32e-3,
+    // 3.48e-2 at n = 400..12800, nearly all of the rise between x = 0.55 and 0.9 (ten times the
+    // default's there at 6400). The symmetric (23) on the same tube is the experiment.
     claim = known_failure(claim,
                           "(22) is not antisymmetric in i and j: momentum is not conserved and the shock's discrete jump "
-                          "conditions miss the exact ones, an error that does not vanish with h (L1_p {L1_p}, L1_u {L1_u} "
-                          "at {levels}; orders {order.L1_p}, {order.L1_u})",
+                          "conditions miss the exact ones, an error that does not vanish with h, and the unbalanced "
+                          "forces drive a velocity noise between contact and shock that grows from n = 3200 on (L1_p "
+                          "{L1_p}, L1_u {L1_u}, L1_v {L1_v} at {levels}; orders {order.L1_p}, {order.L1_u}, {order.L1_v})",
                           "euler=23");
   else if (lattice_floor(p, dim))
     // The tube's lattices keep h/dx = hfact on either side and, behind the shock, a lattice
@@ -400,11 +404,7 @@ OrderClaims first_order(const Params& p, int dim) {
     if (find_case(dim == 1 ? "sod" : "sod" + std::to_string(dim) + "d").method_in_catalogue(p)) claim.unbounded = true;
     else claim = no_order("method settings outside the catalogue's variants: no claim measured for this method, only the verdict is gated");
   }
-  OrderClaims c{{"L1_rho", claim}, {"L1_v", claim}, {"L1_p", claim}, {"L1_u", claim}};
-  // (22)'s velocity error converges at the claimed order on every tier's levels (its local orders
-  // are in the report): only the errors that level off carry the known failure.
-  if (p.text("euler") == "22" && claim.known_failure()) c["L1_v"] = at_least(0.74, why_first_order);
-  return c;
+  return {{"L1_rho", claim}, {"L1_v", claim}, {"L1_p", claim}, {"L1_u", claim}};
 }
 
 Case make_case(int dim) {
@@ -448,6 +448,19 @@ Case make_case(int dim) {
     // order like the chapter's forms, its errors at n = 800 1.5 (rho), 1.0 (v), 1.2 (p), 1.2 (u)
     // times the default variant's.
     c.levels = {.quick = {400, 800, 1600}, .standard = {400, 800, 1600, 3200}, .full = {400, 800, 1600, 3200, 6400}};
+    c.levels_for = [](const Params& p) {
+      // (22): its velocity error falls to n = 3200 and grows from there (first_order): every tier
+      // reaches 6400 (5 to 7 s), where the known failure shows; at 12800 the errors exceed the
+      // drift bounds measured at 800.
+      if (p.text("euler") == "22")
+        return Levels{.quick = {1600, 3200, 6400}, .standard = {400, 800, 1600, 3200, 6400},
+                      .full = {400, 800, 1600, 3200, 6400}};
+      // (29): flat at every level; at 6400 its density drift collapses the Courant step (200,000
+      // steps reach t = 0.152), so the full tier keeps the standard's levels.
+      if (p.text("density") == "continuity29")
+        return Levels{.quick = {400, 800, 1600}, .standard = {400, 800, 1600, 3200}, .full = {400, 800, 1600, 3200}};
+      return Levels{.quick = {400, 800, 1600}, .standard = {400, 800, 1600, 3200}, .full = {400, 800, 1600, 3200, 6400}};
+    };
     c.variants = {{},
                   {"density=continuity33"},
                   {"density=continuity29"},
