@@ -132,7 +132,10 @@ std::vector<Check> gates(const Sweep& s) {
 // kernel's own smoothing is in the reference, sedov/errors.hpp) and from the blast's finite
 // deposit, whose memory fades as the deposit holds more particles.
 // 2D: from n = 48 (the deposit spans 3.6 spacings) L1_rho at gamma 5/3 is first order (1 +- 0.3);
-// at n = 32 (2.4 spacings) the deposit's memory still holds it back (32 -> 64: 0.45). gamma 1.4
+// at n = 32 (2.4 spacings) the deposit's memory still holds it back (32 -> 64: 0.45). Beyond 128
+// it is not: the hot interior inside 0.8 R keeps an error of 0.026 to 0.029 at every n to 256
+// (whatever the deposit's radius), and from 128 to 256 the local order is 0.45, so the full tier
+// reads the row provisional (docs/cases/sedov.md). gamma 1.4
 // is slower: the spike behind a gamma 1.4 shock is compressed 6 times, not 4, and is thinner, and
 // on 48..128 its local orders stay near 0.6; it keeps the former window (band 0.75 around 1: the
 // lowest measured pre-asymptotic order, 0.27 (n = 32 -> 64), minus a margin of 0.02), so it reads
