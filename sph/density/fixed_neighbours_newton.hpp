@@ -42,6 +42,14 @@ namespace sph {
 // every rho is the sum (27) of the h returned, or after max_iterations passes, the last of which
 // only sums rho.
 //
+// The start: the h on entry (the integrator's prediction by (53)) plus the step each particle's
+// last pass proposed beyond the h it kept (next_i - h_i, at most about tol h_i: a converged
+// particle keeps an h within tol of the root, not the root). Without it those offsets add up over
+// the steps until at least half the particles are off by tol after the first pass, and a whole
+// second pass follows (every third step on a uniform gas in random motion). The offsets are kept
+// while the particles keep their numbers (VerletList::renumberings, the same lists and count); a
+// start is only the first pass's guess, so the h returned satisfy (50) to tol whatever it is.
+//
 // Pairs: the lists' (search/verlet_list.hpp), selected with a margin of h (VerletList::set_margin)
 // so that an h that changes by less keeps them; where one changes by more, the lists are updated
 // for the new h (a new search where it leaves their padding). The force loop then visits the
@@ -84,6 +92,15 @@ class FixedNeighboursNewton {
     lo_.assign(n, 0.0);
     hi_.assign(n, std::numeric_limits<double>::infinity());
     mark_.assign(n, 0);
+    if (offset_.size() == n && offset_lists_ == &lists && offset_renumberings_ == lists.renumberings()) {
+      bool held = true;
+      for (std::size_t i = 0; i < n; ++i) {
+        const double h = std::min(p.h[i] + offset_[i], c.h_max);
+        p.h[i] = h, held = held && lists.holds(i, h);
+      }
+      if (!held) lists.update(p.x, p.h, box);
+    }
+    offset_.clear();
     which_ = list.order;
     if (which_.empty())
       for (std::size_t i = 0; i < n; ++i) which_.push_back(static_cast<int>(i));
@@ -104,6 +121,9 @@ class FixedNeighboursNewton {
       changes(c.tol);
       if (changed_.empty()) {
         out.converged = true;
+        offset_.resize(n);
+        for (std::size_t i = 0; i < n; ++i) offset_[i] = next_[i] - p.h[i];
+        offset_lists_ = &lists, offset_renumberings_ = lists.renumberings();
         break;
       }
       if (2 * mark(list) >= n) {
@@ -217,6 +237,10 @@ class FixedNeighboursNewton {
 
   Components<D> xs_;  // the positions' columns (kept from one phase to the next, Scene::xs)
   std::vector<double> drho_, next_, off_, lo_, hi_;
+  // The offsets of the next start (above), and the lists and renumbering they were taken under.
+  std::vector<double> offset_;
+  const VerletList<D>* offset_lists_ = nullptr;
+  long offset_renumberings_ = 0;
   std::vector<unsigned char> mark_;
   std::vector<int> which_, changed_;
 };

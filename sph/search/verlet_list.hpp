@@ -66,6 +66,9 @@ class VerletList {
     return active_;
   }
   long searches() const { return searches_; }
+  // How many times renumber_in_visiting_order has renumbered the particles: a caller keeping an
+  // array over them knows by it whether its indices still name the same particles.
+  long renumberings() const { return renumberings_; }
   // The time spent in update so far (`sphv bench` shows it as the step's search phase).
   double seconds() const { return seconds_; }
   // The next update searches anew, whether or not the lists cover (a step timed with a fresh
@@ -90,6 +93,7 @@ class VerletList {
     order.swap(list_.order);  // the visiting order is now the storage order
     const std::size_t n = order.size();
     if (n == 0) return order;
+    ++renumberings_;
     std::vector<int> now(n);  // now[i]: the new number of particle i
 #pragma omp parallel for if (n >= parallel_threshold)
     for (std::size_t k = 0; k < n; ++k) now[order[k]] = static_cast<int>(k);
@@ -234,6 +238,7 @@ class VerletList {
   std::vector<double> h0_;
   Box<D> box_;
   long searches_ = 0;
+  long renumberings_ = 0;
   long searches_at_expiry_ = 1;  // the lists serve once searches_ reaches it (expire)
   double seconds_ = 0.0;
   double margin_ = 0.0;
