@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cstdio>
+#include <cstdint>
 #include <cstdlib>
 #include <cmath>
 #include <limits>
@@ -47,8 +48,9 @@ namespace sph {
 // particle keeps an h within tol of the root, not the root). Without it those offsets add up over
 // the steps until at least half the particles are off by tol after the first pass, and a whole
 // second pass follows (every third step on a uniform gas in random motion). The offsets are kept
-// while the particles keep their numbers (VerletList::renumberings, the same lists and count); a
-// start is only the first pass's guess, so the h returned satisfy (50) to tol whatever it is.
+// while the particles keep their numbers (VerletList::serial and renumberings: the same lists,
+// renumbered as often); a start is only the first pass's guess, so the h returned satisfy (50) to
+// tol whatever it is.
 //
 // Pairs: the lists' (search/verlet_list.hpp), selected with a margin of h (VerletList::set_margin)
 // so that an h that changes by less keeps them; where one changes by more, the lists are updated
@@ -92,7 +94,7 @@ class FixedNeighboursNewton {
     lo_.assign(n, 0.0);
     hi_.assign(n, std::numeric_limits<double>::infinity());
     mark_.assign(n, 0);
-    if (offset_.size() == n && offset_lists_ == &lists && offset_renumberings_ == lists.renumberings()) {
+    if (offset_.size() == n && offset_serial_ == lists.serial() && offset_renumberings_ == lists.renumberings()) {
       bool held = true;
       for (std::size_t i = 0; i < n; ++i) {
         const double h = std::min(p.h[i] + offset_[i], c.h_max);
@@ -123,7 +125,7 @@ class FixedNeighboursNewton {
         out.converged = true;
         offset_.resize(n);
         for (std::size_t i = 0; i < n; ++i) offset_[i] = next_[i] - p.h[i];
-        offset_lists_ = &lists, offset_renumberings_ = lists.renumberings();
+        offset_serial_ = lists.serial(), offset_renumberings_ = lists.renumberings();
         break;
       }
       if (2 * mark(list) >= n) {
@@ -239,7 +241,7 @@ class FixedNeighboursNewton {
   std::vector<double> drho_, next_, off_, lo_, hi_;
   // The offsets of the next start (above), and the lists and renumbering they were taken under.
   std::vector<double> offset_;
-  const VerletList<D>* offset_lists_ = nullptr;
+  std::uint64_t offset_serial_ = 0;
   long offset_renumberings_ = 0;
   std::vector<unsigned char> mark_;
   std::vector<int> which_, changed_;

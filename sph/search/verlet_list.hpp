@@ -1,6 +1,8 @@
 #pragma once
 #include <algorithm>
+#include <atomic>
 #include <chrono>
+#include <cstdint>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -50,7 +52,7 @@ extern template std::size_t select_pairs<3>(IsaPath, std::size_t, std::size_t, c
 template <int D>
 class VerletList {
  public:
-  explicit VerletList(double skin) : skin_(skin) {}
+  explicit VerletList(double skin) : skin_(skin), serial_(next_serial()) {}
 
   // The list for the particles at x with support radii h: the last one, or a new search.
   // Throws std::invalid_argument from the search (h not positive and finite, or beyond half a
@@ -66,8 +68,10 @@ class VerletList {
     return active_;
   }
   long searches() const { return searches_; }
-  // How many times renumber_in_visiting_order has renumbered the particles: a caller keeping an
-  // array over them knows by it whether its indices still name the same particles.
+  // A number no other list made in this process has, and how many times renumber_in_visiting_order
+  // has renumbered the particles: with both, a caller keeping an array over the particles knows
+  // whether its indices still name the particles they named (a list's address may be reused).
+  std::uint64_t serial() const { return serial_; }
   long renumberings() const { return renumberings_; }
   // The time spent in update so far (`sphv bench` shows it as the step's search phase).
   double seconds() const { return seconds_; }
@@ -239,6 +243,11 @@ class VerletList {
   Box<D> box_;
   long searches_ = 0;
   long renumberings_ = 0;
+  std::uint64_t serial_;
+  static std::uint64_t next_serial() {
+    static std::atomic<std::uint64_t> made{0};
+    return ++made;
+  }
   long searches_at_expiry_ = 1;  // the lists serve once searches_ reaches it (expire)
   double seconds_ = 0.0;
   double margin_ = 0.0;
