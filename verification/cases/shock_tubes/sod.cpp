@@ -385,8 +385,9 @@ OrderClaims first_order(const Params& p, int dim) {
     claim = known_failure(claim,
                           "(22) is not antisymmetric in i and j: momentum is not conserved and the shock's discrete jump "
                           "conditions miss the exact ones, an error that does not vanish with h, and the unbalanced "
-                          "forces drive a velocity noise between contact and shock that grows from n = 3200 on (L1_p "
-                          "{L1_p}, L1_u {L1_u}, L1_v {L1_v} at {levels}; orders {order.L1_p}, {order.L1_u}, {order.L1_v})",
+                          "forces drive a velocity noise between contact and shock that grows again at the finest "
+                          "levels (L1_p {L1_p}, L1_u {L1_u}, L1_v {L1_v} at {levels}; orders {order.L1_p}, "
+                          "{order.L1_u}, {order.L1_v})",
                           "euler=23");
   else if (lattice_floor(p, dim))
     // The tube's lattices keep h/dx = hfact on either side and, behind the shock, a lattice
