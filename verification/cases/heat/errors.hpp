@@ -52,6 +52,11 @@ inline const std::map<std::string, std::string> error_defs = {
                       "(sphv score: setup=gauss)"},
     {"spatial_sine", "as spatial_gauss for the sine mode T = T0 + A exp(-chi d (2 pi)^2 t) prod_a sin(2 pi x_a) "
                      "(sphv score: setup=sine)"},
+    {"spatial_gauss_above_floor", "|spatial_gauss - spatial_gauss_floor|: the distance to the lattice floor, the RMS "
+                                  "(as spatial_gauss) of the exact pulse at t_end (1 + eps) against the exact one at "
+                                  "t_end, eps = symbol(k) / k^2 - 1 as k dx -> 0 by direct lattice sums "
+                                  "(heat/lattice.hpp); sphv run only, where eps is not 0"},
+    {"spatial_sine_above_floor", "as spatial_gauss_above_floor for spatial_sine"},
     {"time_euler", "RMS (as spatial_gauss) of forward Euler at dt = C h^2 / chi against CVODE (sphv run only)"},
     {"time_heun", "as time_euler for Heun (sphv run only)"},
     {"mismatch", "sphv score's check that a snapshot holds the problem its settings describe (not an error): the "
