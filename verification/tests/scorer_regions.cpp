@@ -74,7 +74,8 @@ TEST_CASE("square: the exact initial square's misfit is zero with a smeared dens
         for (int k = 0; k < D; ++k) edge = std::min(edge, std::abs(std::abs(p.x[i][k] - 0.5) - 0.25));
         if (edge < 1.0 / 16) rho[i] = 0.5 * (sq.rho_in() + sq.rho_out());
       }
-      square::measure<D>(r, p.x, p.v, p.m, rho, p.u, 0.0, sq, prm.real("gamma"), prm.integer("n"));
+      square::measure<D>(r, p.x, p.v, p.m, rho, p.u, square::phase_by_u(p.u, sq, prm.real("gamma")), 0.0, sq,
+                         prm.real("gamma"), prm.integer("n"));
     };
     if (std::string(dim) == "dim=2") one(std::integral_constant<int, 2>{});
     else one(std::integral_constant<int, 3>{});

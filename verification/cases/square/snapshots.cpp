@@ -53,8 +53,9 @@ Result score_square(const Params& prm, const Snapshot& s) {
     auto x = vectors<D>(s, "", who);
     for (auto& xi : x)
       for (int d = 0; d < D; ++d) xi[d] -= std::floor(xi[d]);  // into [0, 1)
-    square::measure<D>(r, x, vectors<D>(s, "v", who), s.at("m", who), s.at("rho", who), u, prm.real("t_end"), sq,
-                       prm.real("gamma"), prm.integer("n"));
+    square::measure<D>(r, x, vectors<D>(s, "v", who), s.at("m", who), s.at("rho", who), u,
+                       square::phase_by_u(u, sq, prm.real("gamma")), prm.real("t_end"), sq, prm.real("gamma"),
+                       prm.integer("n"));
   };
   if (s.dim == 2) one(std::integral_constant<int, 2>{});
   else one(std::integral_constant<int, 3>{});
