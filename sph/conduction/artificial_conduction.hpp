@@ -16,7 +16,7 @@
 
 namespace sph {
 
-// alpha_u = 1: Price 2008's value (his Kelvin-Helmholtz and shock-tube tests).
+// alpha_u = 1: Price 2008's value (his Kelvin-Helmholtz and shock-tube tests); the scheme's option.
 template <int D>
 struct ArtificialConduction {
   static constexpr bool own_h_kernels = true;

@@ -15,8 +15,8 @@
 // Three neighbour loops an evaluation: the density's (with its Newton passes), the velocity
 // gradient's and the force's.
 //
-// Options: gamma, hfact, h_max as for the chapter's scheme; alpha is the switch's alpha_max and beta
-// the signal velocity's coefficient. hmode must be iterate50 (grad-h conserves energy only with h
+// Options: gamma, hfact, h_max as for the chapter's scheme; alpha is the switch's alpha_max, beta
+// the signal velocity's coefficient and alpha_u the conduction's (0: none, for an experiment). hmode must be iterate50 (grad-h conserves energy only with h
 // tied to rho by (50) at every evaluation) and energy 38 (the scheme's energy equation is (38)'s
 // form with the kernel at h_i and 1/Omega_i): others throw std::invalid_argument.
 //
@@ -60,7 +60,7 @@ class GradhSwitches {
 
   explicit GradhSwitches(const SchemeOptions& o, Extra... extra)
       : h_{.hfact = o.hfact, .h_max = o.h_max, .tol = h_tol}, switch_({.alpha_max = o.alpha}),
-        forces_{{{}, Gas{{o.gamma}}, {&omega_}, {&omega_}, {&switch_.alpha, o.beta}, {}, {}, extra...}} {
+        forces_{{{}, Gas{{o.gamma}}, {&omega_}, {&omega_}, {&switch_.alpha, o.beta}, {o.alpha_u}, {}, extra...}} {
     if (o.hmode != "iterate50")
       throw std::invalid_argument("scheme gradh_switches: hmode " + o.hmode + " (grad-h needs h by (50), iterate50)");
     if (o.energy != "38")

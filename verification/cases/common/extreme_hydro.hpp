@@ -39,7 +39,9 @@ inline std::vector<ParamSpec> method_params(double gamma, double hfact) {
       choice_param("hmode", "iterate50", "smoothing length: (50) iterated with the density, (53), or fixed",
                    {"iterate50", "rate53", "fixed"}),
       real_param("alpha", 1.0, "artificial viscosity alpha (45)", -1e-300),
-      real_param("beta", 2.0, "artificial viscosity beta (45)", -1e-300)};
+      real_param("beta", 2.0, "artificial viscosity beta (45)", -1e-300),
+      real_param("alpha_u", 1.0, "artificial conduction's coefficient (scheme gradh_switches; Price 2008: 1; 0: none)",
+                 -1e-300)};
   for (auto& q : time_step_params()) ps.push_back(q);
   ps.push_back(integer_param("max_steps", 20000, "step budget (ends with a verdict)"));
   return ps;
@@ -54,6 +56,7 @@ inline Method method(const Params& p) {
   m.energy = p.text("energy");
   m.alpha = p.real("alpha");
   m.beta = p.real("beta");
+  m.alpha_u = p.real("alpha_u");
   read_time_step(p, m.controls.step);
   m.controls.max_steps = p.integer("max_steps");
   return m;
