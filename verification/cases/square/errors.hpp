@@ -22,13 +22,13 @@ namespace sphv::square {
 
 inline const std::map<std::string, std::string> error_defs = {
     {"v_rms", "sqrt(sum_light m_i |v_i - v_adv|^2 / sum_light m_i) / c_out: the mass-weighted RMS velocity noise of the "
-              "light phase (u_i above sqrt(u_in u_out)) relative to its sound speed c_out = sqrt(gamma p0 / rho_out); "
-              "exact 0"},
+              "light phase (its particles by the set-up in a run; in a scored snapshot those with u_i above "
+              "sqrt(u_in u_out)) relative to its sound speed c_out = sqrt(gamma p0 / rho_out); exact 0"},
     {"L1_rho", "sum_i V_i |rho_i - rho(x_i, t)| / ((rho_in - rho_out) sum_i V_i), V_i = m_i / rho_i, rho the exact "
                "density carried by v_adv (reference/square): the L1 error of the density field relative to the jump"},
     {"misfit", "sum_i c_i^d w_i / (1/2)^d: the area (volume) of the particles' cells on the wrong side of the carried "
                "square's edge, relative to the square's; c_i = (m_i / rho_phase)^(1/d) the side of particle i's cell at "
-               "its phase's exact density (dense: u_i below sqrt(u_in u_out)), w_i the fraction of that cell outside the "
+               "its phase's exact density (the phase as for v_rms), w_i the fraction of that cell outside the "
                "square for a dense particle, inside it for a light one: 0 at t = 0, where the cells tile each phase "
                "exactly; only for the sharp step (width = 0)"},
     {"mismatch", "sphv score's check that a snapshot holds the problem its settings describe (not an error): the "
