@@ -96,9 +96,10 @@ class FixedNeighboursNewton {
     mark_.assign(n, 0);
     if (offset_.size() == n && offset_serial_ == lists.serial() && offset_renumberings_ == lists.renumberings()) {
       bool held = true;
+#pragma omp parallel for reduction(&& : held) if (n >= parallel_threshold)
       for (std::size_t i = 0; i < n; ++i) {
         const double h = std::min(p.h[i] + offset_[i], c.h_max);
-        p.h[i] = h, held = held && lists.holds(i, h);
+        p.h[i] = h, held = lists.holds(i, h) && held;
       }
       if (!held) lists.update(p.x, p.h, box);
     }
@@ -124,6 +125,7 @@ class FixedNeighboursNewton {
       if (changed_.empty()) {
         out.converged = true;
         offset_.resize(n);
+#pragma omp parallel for if (n >= parallel_threshold)
         for (std::size_t i = 0; i < n; ++i) offset_[i] = next_[i] - p.h[i];
         offset_serial_ = lists.serial(), offset_renumberings_ = lists.renumberings();
         break;

@@ -16,9 +16,10 @@
 // gradient's and the force's.
 //
 // Options: gamma, hfact, h_max as for the chapter's scheme; alpha is the switch's alpha_max, beta
-// the signal velocity's coefficient and alpha_u the conduction's (0: none, for an experiment). hmode must be iterate50 (grad-h conserves energy only with h
-// tied to rho by (50) at every evaluation) and energy 38 (the scheme's energy equation is (38)'s
-// form with the kernel at h_i and 1/Omega_i): others throw std::invalid_argument.
+// the signal velocity's coefficient and alpha_u the conduction's (0: none, for an experiment).
+// hmode must be iterate50 (grad-h conserves energy only with h tied to rho by (50) at every
+// evaluation) and energy 38 (the scheme's energy equation is (38)'s form with the kernel at h_i
+// and 1/Omega_i): others throw std::invalid_argument.
 //
 // Not reorderable: alpha_i and the div v_i of the last step are arrays over the particles that the
 // storage order (hydro/storage_order.hpp) does not permute.

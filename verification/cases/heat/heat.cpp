@@ -72,7 +72,7 @@ Result run_dim(const Params& prm) {
   const double eps = heat::long_wave_rate_error<D>(form, hfact, 1.0 / n);
   const double gauss_floor = rms_error(gauss(t_end * (1.0 + eps)), gauss_exact);
   const double sine_floor = rms_error(sine(t_end * (1.0 + eps)), sine_exact);
-  if (heat::has_lattice_floor(eps)) {
+  if (heat::has_lattice_floor(D, form, hfact)) {
     r.errors["spatial_gauss_above_floor"] = std::abs(r.errors["spatial_gauss"] - gauss_floor);
     r.errors["spatial_sine_above_floor"] = std::abs(r.errors["spatial_sine"] - sine_floor);
   }
@@ -165,9 +165,11 @@ std::vector<Check> gates(const Sweep& s) {
   // closed form from the lattice symbol (direct lattice sums, heat/lattice.hpp):
   // rms(prod sin) |exp(-lambda_lattice t) - exp(-chi k^2 t)| c_v, rms(prod sin) = 2^(-d/2).
   // Agreement to the CVODE tolerance (measured 2.1e-7 in 1D, 2.5e-7 in 2D at n = 32; bound 1e-5).
-  const double pred = std::pow(0.5, 0.5 * dim) * cv *
-                      std::abs(std::exp(-fine.extra["decay_rate_lattice"].get<double>() * t) -
-                               std::exp(-fine.extra["decay_rate_analytic"].get<double>() * t));
+  const double analytic = fine.extra["decay_rate_analytic"].get<double>();
+  auto mode_error = [&](double rate) {  // the mode's error when it decays at `rate` instead
+    return std::pow(0.5, 0.5 * dim) * cv * std::abs(std::exp(-rate * t) - std::exp(-analytic * t));
+  };
+  const double pred = mode_error(fine.extra["decay_rate_lattice"].get<double>());
   c.push_back({"spatial_sine_vs_lattice_symbol", std::abs(fine.errors.at("spatial_sine") / pred - 1.0), 0.0, 1e-5,
                "closed form of the eigenmode's error from the lattice symbol", Check::Kind::verification, "spatial_sine"});
   const bool floor = fine.errors.count("spatial_sine_above_floor");
@@ -175,10 +177,7 @@ std::vector<Check> gates(const Sweep& s) {
     // The distance to the floor in closed form too: the floor is the same mode decaying at the
     // rate chi k^2 (1 + eps). Bound 2e-5: the one above over the distance's share of the error,
     // at least 0.6 (0.64 at n = 128 in 2D, measured 7.7e-6 there).
-    const double floor_pred = std::pow(0.5, 0.5 * dim) * cv *
-                              std::abs(std::exp(-fine.extra["decay_rate_analytic"].get<double>() *
-                                                (1.0 + fine.extra["lattice_floor_rate"].get<double>()) * t) -
-                                       std::exp(-fine.extra["decay_rate_analytic"].get<double>() * t));
+    const double floor_pred = mode_error(analytic * (1.0 + fine.extra["lattice_floor_rate"].get<double>()));
     c.push_back({"spatial_sine_above_floor_vs_lattice_symbol",
                  std::abs(fine.errors.at("spatial_sine_above_floor") / std::abs(pred - floor_pred) - 1.0), 0.0, 2e-5,
                  "closed form of the eigenmode's distance to the floor from the lattice symbol", Check::Kind::verification,
@@ -210,10 +209,7 @@ OrderClaims orders(const Params& p) {
   const OrderClaim space{2.0, 0.3, "O(h^2) of the symmetric kernel at fixed h/dx"};
   OrderClaims o{{"time_euler", {2.0, 0.3, "dt = C h^2 / chi, so Euler's O(dt) is O(n^-2)"}},
                 {"time_heun", {4.0, 0.3, "dt = C h^2 / chi, so Heun's O(dt^2) is O(n^-4)"}}};
-  const double eps = by_dimension(p, [&](auto d) {
-    return heat::long_wave_rate_error<decltype(d)::value>(p.text("form"), p.real("hfact"), 1.0 / p.integer("n"));
-  });
-  if (!heat::has_lattice_floor(eps)) {
+  if (!heat::has_lattice_floor(static_cast<int>(p.integer("dim")), p.text("form"), p.real("hfact"))) {
     o["spatial_sine"] = o["spatial_gauss"] = space;
     return o;
   }

@@ -111,10 +111,16 @@ double long_wave_rate_error(const std::string& form, double ratio, double dx) {
   return sym / k.squaredNorm() - 1.0;
 }
 
-// Whether the lattice leaves a floor at fixed h/dx: |eps| above 1e-5, where the (k h)^2 term's
-// residue in long_wave_rate_error is of order 1e-7 (2D at h/dx 4: 8.6e-4; 1D at 2 or 4: the sums
-// are exact).
-inline bool has_lattice_floor(double eps) { return std::abs(eps) > 1e-5; }
+// Whether the dim-dimensional lattice leaves a floor at fixed h/dx = ratio for the form: its
+// long-wave rate error eps (a function of the ratio alone, dx scales out) above 1e-5 in magnitude,
+// where the (k h)^2 term's residue in long_wave_rate_error is of order 1e-7 (2D at h/dx 4: 8.6e-4;
+// 1D at 2 or 4: the sums are exact).
+inline bool has_lattice_floor(int dim, const std::string& form, double ratio) {
+  const double eps = dim == 1   ? long_wave_rate_error<1>(form, ratio, 1.0)
+                     : dim == 2 ? long_wave_rate_error<2>(form, ratio, 1.0)
+                                : long_wave_rate_error<3>(form, ratio, 1.0);
+  return std::abs(eps) > 1e-5;
+}
 
 // Relative error of the Hessian tensor (73) (errata: the (d + 2) factor) on the sine product
 // prod_a sin(k_a x_a) with k_a = k for every a: for the mode exp(i q.x) its symbol is

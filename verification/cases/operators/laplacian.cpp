@@ -101,10 +101,8 @@ struct Residuals {
 // lattice (no jitter) at fixed h/dx whose second moment is not the continuum's (2D and 3D at h/dx
 // 4; not 1D at 2 or 4, where the sums are exact). Its claim is then on the distance to the floor.
 bool floor_claim(const Params& p) {
-  if (p.real("jitter") > 0.0 || p.real("hgrow") > 0.0) return false;
-  return heat::has_lattice_floor(by_dimension(p, [&](auto d) {
-    return heat::long_wave_rate_error<decltype(d)::value>("brookshaw", p.real("hfact"), 1.0 / p.integer("n"));
-  }));
+  return p.real("jitter") == 0.0 && p.real("hgrow") == 0.0 &&
+         heat::has_lattice_floor(static_cast<int>(p.integer("dim")), "brookshaw", p.real("hfact"));
 }
 
 template <int D>
