@@ -121,7 +121,9 @@ extern template sph::HydroOutcome evolve_gas_kernel<3>(const std::string&, sph::
                                                       const sph::Box<3>&, const Method&,
                                                       sph::HydroHooks<3>);
 
-// Mean of value over particles in radial bins [k dr, (k+1) dr), k < bins, around the origin.
+// Mean of value over particles in radial bins [k dr, (k+1) dr), k < bins, around the origin: an
+// entry (centre, mean, particle count) for each bin that holds a particle, in order of radius. An
+// empty bin has no entry, so that the three vectors stay aligned and no entry is a mean of nothing.
 struct Profile {
   std::vector<double> r, mean;
   std::vector<long> count;
@@ -130,18 +132,19 @@ inline Profile radial_profile(const std::vector<double>& radius, const std::vect
                               int bins) {
   Profile pr;
   const double dr = r_max / bins;
-  std::vector<double> sum(bins, 0.0);
-  pr.count.assign(bins, 0);
   if (!(dr > 0.0)) return pr;  // a scored snapshot can give r_max = 0 or NaN (no shock found)
+  std::vector<double> sum(bins, 0.0);
+  std::vector<long> count(bins, 0);
   for (std::size_t i = 0; i < radius.size(); ++i) {
     const double q = radius[i] / dr;  // bin index, compared before the cast (NaN and huge q stay out)
     if (q >= 0.0 && q < bins) {
       const int k = static_cast<int>(q);
-      sum[k] += value[i], ++pr.count[k];
+      sum[k] += value[i], ++count[k];
     }
   }
   for (int k = 0; k < bins; ++k)
-    if (pr.count[k] > 0) pr.r.push_back((k + 0.5) * dr), pr.mean.push_back(sum[k] / pr.count[k]);
+    if (count[k] > 0)
+      pr.r.push_back((k + 0.5) * dr), pr.mean.push_back(sum[k] / count[k]), pr.count.push_back(count[k]);
   return pr;
 }
 

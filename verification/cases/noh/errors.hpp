@@ -72,11 +72,7 @@ void measure(Result& r, const std::vector<sph::Vec<D>>& x, const std::vector<sph
   std::nth_element(mass.begin(), mass.begin() + mass.size() / 2, mass.end());
   const double spacing = mass.empty() ? 0.0 : std::pow(mass[mass.size() / 2], 1.0 / D);
   const int bins = spacing > 0.0 ? static_cast<int>(std::clamp(std::ceil(4.0 * Rs / spacing), 40.0, 1e6)) : 40;
-  const extreme::Profile binned = extreme::radial_profile(rad, rho, 2.0 * Rs, bins);
-  extreme::Profile prof;
-  for (std::size_t b = 0; b < binned.r.size(); ++b)
-    if (binned.count[b] > 0)
-      prof.r.push_back(binned.r[b]), prof.mean.push_back(binned.mean[b]), prof.count.push_back(binned.count[b]);
+  const extreme::Profile prof = extreme::radial_profile(rad, rho, 2.0 * Rs, bins);
   const double R_front = radial::falling_through(prof, 0.5 * (rho_post + pre), 0.25 * Rs, 0.0);
   // Swept mass is always defined. The front and the plateau only where the binned density rises
   // through the midpoint at all: in 3D at n = 10 (R_s = 0.8 h0) it peaks at ~12 against 64 and
