@@ -58,6 +58,7 @@ class Chapter {
     if (rate53 != (o.hmode == "rate53") || (o.hmode != "iterate50" && o.hmode != "rate53" && o.hmode != "fixed"))
       throw std::invalid_argument("scheme chapter: hmode " + o.hmode + " does not match the scheme's type");
     if (o.alpha_u != 1.0) throw std::invalid_argument("scheme chapter has no artificial conduction (alpha_u)");
+    if (o.vsig_u != "pressure") throw std::invalid_argument("scheme chapter has no artificial conduction (vsig_u)");
   }
 
   // Before the first step: h by (50) iterated with (27), in every hmode (9.4.4).

@@ -16,7 +16,9 @@
 // gradient's and the force's.
 //
 // Options: gamma, hfact, h_max as for the chapter's scheme; alpha is the switch's alpha_max, beta
-// the signal velocity's coefficient and alpha_u the conduction's (0: none, for an experiment).
+// the signal velocity's coefficient and alpha_u the conduction's (0: none, for an experiment);
+// vsig_u the conduction's signal velocity, "pressure" (Price 2008's, the default) or "velocity"
+// (conduction/artificial_conduction.hpp).
 // hmode must be iterate50 (grad-h conserves energy only with h tied to rho by (50) at every
 // evaluation) and energy 38 (the scheme's energy equation is (38)'s form with the kernel at h_i
 // and 1/Omega_i): others throw std::invalid_argument.
@@ -61,7 +63,7 @@ class GradhSwitches {
 
   explicit GradhSwitches(const SchemeOptions& o, Extra... extra)
       : h_{.hfact = o.hfact, .h_max = o.h_max, .tol = h_tol}, switch_({.alpha_max = o.alpha}),
-        forces_{{{}, Gas{{o.gamma}}, {&omega_}, {&omega_}, {&switch_.alpha, o.beta}, {o.alpha_u}, {}, extra...}} {
+        forces_{{{}, Gas{{o.gamma}}, {&omega_}, {&omega_}, {&switch_.alpha, o.beta}, conduction(o), {}, extra...}} {
     if (o.hmode != "iterate50")
       throw std::invalid_argument("scheme gradh_switches: hmode " + o.hmode + " (grad-h needs h by (50), iterate50)");
     if (o.energy != "38")
@@ -114,6 +116,13 @@ class GradhSwitches {
   Forces& forces() { return forces_; }
 
  private:
+  static ArtificialConduction<D> conduction(const SchemeOptions& o) {
+    if (o.vsig_u == "pressure") return {.alpha_u = o.alpha_u, .by_pressure = 1.0, .by_velocity = 0.0};
+    if (o.vsig_u == "velocity") return {.alpha_u = o.alpha_u, .by_pressure = 0.0, .by_velocity = 1.0};
+    throw std::invalid_argument("scheme gradh_switches: conduction signal velocity " + o.vsig_u +
+                                " (pressure or velocity)");
+  }
+
   SmoothingLengthControl h_;
   FixedNeighboursNewton<D, K, true> h_solver_;
   std::vector<double> omega_, div_, curl_;

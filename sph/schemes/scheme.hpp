@@ -27,6 +27,7 @@ struct SchemeOptions {
   double gamma = 5.0 / 3.0;
   double alpha = 1.0, beta = 2.0;  // artificial viscosity (45)
   double alpha_u = 1.0;            // artificial conduction (Price 2008), in the schemes that have it
+  std::string vsig_u = "pressure";  // its signal velocity: "pressure" (Price 2008) or "velocity"
   double hfact = 2.4;              // (50)
   double h_max = 1e300;            // (50)'s cap (density/fixed_neighbours.hpp)
   std::string hmode = "iterate50";

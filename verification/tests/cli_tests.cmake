@@ -27,6 +27,7 @@ sphv_refuses(bad_dim run interpolation --set dim=4)
 sphv_refuses(unknown_option run kernel --bogus)
 # Options a scheme refuses (sph/schemes/) are bad input too: exit 2, not 3.
 sphv_refuses(chapter_conduction run square --set n=16 --set alpha_u=0)
+sphv_refuses(chapter_conduction_speed run square --set n=16 --set vsig_u=velocity)
 sphv_refuses(gradh_rate53 run sedov --set n=16 --set scheme=gradh_switches --set hmode=rate53)
 add_test(NAME cli_scheme_option_exits_2 COMMAND bash -c
          "$<TARGET_FILE:sphv> run sedov --set n=16,scheme=gradh_switches,hmode=rate53 --out ${CMAKE_BINARY_DIR}/cli_rate53 2>/dev/null; test $? -eq 2")

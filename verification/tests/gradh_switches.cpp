@@ -137,6 +137,13 @@ TEST_CASE("gradh_switches: each force term equals a direct sum over all pairs", 
             const double F = 0.5 * (gi + gj).dot(rij) / rij.norm();
             return Rates{V::Zero(), m[j] * alpha_u * std::sqrt(std::abs(P[i] - P[j]) / rho_ij) * (u[i] - u[j]) * F / rho_ij};
           });
+  compare("artificial conduction, velocity-based signal", sph::ArtificialConduction<D>{alpha_u, 0.0, 1.0},
+          [&](auto i, auto j, const V& rij, const V& gi, const V& gj) {
+            const double rho_ij = 0.5 * (rho[i] + rho[j]);
+            const double F = 0.5 * (gi + gj).dot(rij) / rij.norm();
+            const double vsig = std::abs((v[i] - v[j]).dot(rij / rij.norm()));
+            return Rates{V::Zero(), m[j] * alpha_u * vsig * (u[i] - u[j]) * F / rho_ij};
+          });
 }
 
 // The velocity's divergence and curl (hydro/velocity_gradient.hpp) against the estimate written as a

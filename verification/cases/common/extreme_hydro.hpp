@@ -41,7 +41,9 @@ inline std::vector<ParamSpec> method_params(double gamma, double hfact) {
       real_param("alpha", 1.0, "artificial viscosity alpha (45)", -1e-300),
       real_param("beta", 2.0, "artificial viscosity beta (45)", -1e-300),
       real_param("alpha_u", 1.0, "artificial conduction's coefficient (scheme gradh_switches; Price 2008: 1; 0: none)",
-                 -1e-300)};
+                 -1e-300),
+      choice_param("vsig_u", "pressure", "artificial conduction's signal velocity (scheme gradh_switches): "
+                   "sqrt(|P_i - P_j| / rho_ij) (Price 2008) or |v_ij . r_ij| / |r_ij|", {"pressure", "velocity"})};
   for (auto& q : time_step_params()) ps.push_back(q);
   ps.push_back(integer_param("max_steps", 20000, "step budget (ends with a verdict)"));
   return ps;
@@ -57,6 +59,7 @@ inline Method method(const Params& p) {
   m.alpha = p.real("alpha");
   m.beta = p.real("beta");
   m.alpha_u = p.real("alpha_u");
+  m.vsig_u = p.text("vsig_u");
   read_time_step(p, m.controls.step);
   m.controls.max_steps = p.integer("max_steps");
   return m;

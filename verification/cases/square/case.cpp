@@ -23,6 +23,12 @@
 // has rounded the corners into a shape whose size does not shrink with h: at t_end = 0.25 they do
 // on n = 32..256, at t_end = 1 they level off from n = 64 (known failures; the smooth step verifies
 // L1_rho, t_end = 0.25 misfit).
+//
+// scheme=gradh_switches (grad-h, the Cullen & Dehnen switch, artificial conduction): on the sharp
+// step its errors level off too (known failures: the blip's flow, which its switch leaves
+// undamped); on the smooth step its conduction at Price 2008's pressure-based signal velocity
+// moves heat that the pressure's own discretisation error drives (known failures), and at the
+// velocity-based one (vsig_u=velocity) it converges at second order, the experiment of both.
 #include <cmath>
 #include <map>
 #include <string>
@@ -95,6 +101,16 @@ bool smooth(const Params& p) { return p.real("width") > 0.0; }
 // (the claims), or lower (the catalogue's smooth step, at alpha = 0.1).
 bool full_viscosity(const Params& p) { return p.real("alpha") >= 1.0; }
 
+// Whether the scheme is the grad-h scheme with the viscosity switch and artificial conduction
+// (sph/schemes/gradh_switches.hpp), and whether its conduction's signal velocity is the pressure-
+// based one (Price 2008, its default).
+bool gradh(const Params& p) { return p.text("scheme") != sph::ChapterScheme::name; }
+bool pressure_conduction(const Params& p) { return gradh(p) && p.text("vsig_u") == "pressure"; }
+
+// The grad-h scheme's smooth step with the velocity-based conduction: the experiment of its
+// known failures (the claims).
+const std::string gradh_smooth = "scheme=gradh_switches,lattice=one,width=0.05,vsig_u=velocity";
+
 // Whether the run ends before the contact's spurious surface tension has rounded the corners:
 // a quarter of the end time's two sound crossings (the experiment whose edge errors converge).
 bool early(const Params& p) { return p.real("t_end") <= 0.25; }
@@ -104,6 +120,9 @@ bool early(const Params& p) { return p.real("t_end") <= 0.25; }
 // that fall are largest at the coarsest level, the sharp step's do not fall), bounds at 1.5 times
 // these. The series: docs/cases/square.md.
 std::map<std::string, double> measured(const Params& p) {
+  if (gradh(p) && smooth(p) && pressure_conduction(p)) return {{"L1_rho", 5.023e-2}, {"v_rms", 1.222e-2}};
+  if (gradh(p) && smooth(p)) return {{"L1_rho", 1.924e-2}, {"v_rms", 9.382e-3}};  // vsig_u=velocity
+  if (gradh(p) && !early(p)) return {{"L1_rho", 9.956e-2}, {"misfit", 1.460e-1}, {"v_rms", 1.946e-2}};
   if (smooth(p) && !full_viscosity(p)) return {{"L1_rho", 1.284e-2}, {"v_rms", 6.816e-3}};  // alpha 0.1
   if (smooth(p)) return {{"L1_rho", 1.256e-2}, {"v_rms", 3.128e-3}};
   if (early(p)) return {{"L1_rho", 2.603e-2}, {"misfit", 2.149e-2}, {"v_rms", 8.342e-3}};
@@ -146,6 +165,26 @@ OrderClaims orders(const Params& p) {
                              "with a symmetric kernel: second order"};
     c["v_rms"] = {2.0, 0.3, "the pressure (gamma - 1) rho u errs by the density's O(h^2 rho''), and the velocity it "
                             "drives with it: second order"};
+    if (!pressure_conduction(p)) return c;
+    // The grad-h scheme's conduction at Price 2008's signal velocity sqrt(|P_i - P_j| / rho_ij):
+    // the pressure's O(h^2) error makes it O(h), not zero, and the heat it moves across the
+    // four-fold u profile is a pressure error that drives more noise. With the velocity-based
+    // signal velocity (|v_ij . r_ij| / |r_ij|, zero in a gas at rest) the same step converges
+    // (v_rms local orders 2.06, 1.68, L1_rho 1.87, 1.79 on n = 32..128; docs/cases/square.md).
+    c["v_rms"] = known_failure(
+        c["v_rms"],
+        "the artificial conduction's signal velocity sqrt(|P_i - P_j| / rho_ij) (Price 2008) is driven by the "
+        "pressure's own discretisation error: it moves heat across the smooth step, whose pressure error drives a "
+        "velocity noise at the particle scale: v_rms = {v_rms} of c_out at {levels}, observed order {order.v_rms}; "
+        "with the velocity-based signal velocity the same step converges",
+        gradh_smooth);
+    c["L1_rho"] = known_failure(
+        c["L1_rho"],
+        "the artificial conduction's signal velocity sqrt(|P_i - P_j| / rho_ij) (Price 2008) is driven by the "
+        "pressure's own discretisation error and moves heat across the smooth step, and the density follows the "
+        "heat at uniform pressure: L1_rho {L1_rho} at {levels}, observed order {order.L1_rho}; with the "
+        "velocity-based signal velocity the same step converges",
+        gradh_smooth);
     return c;
   }
   const OrderClaim l1{1.0, 0.3, "the summation density (27) spreads the step over the kernel's support h ~ 1/n along "
@@ -157,6 +196,27 @@ OrderClaims orders(const Params& p) {
   // The velocity noise: the blip's O(p) jump over a layer of width h whatever n. The viscosity is
   // not what keeps it: at alpha = 0.1 the sharp step's v_rms is 7.5e-3, 6.7e-3, 6.4e-3 at n = 32,
   // 48, 64 (1 thread), where the smooth step's converges at second order.
+  if (gradh(p) && !early(p)) {
+    // The grad-h scheme on the sharp step: its errors do not fall with or without the conduction
+    // (misfit 0.146, 0.134, 0.115 with it at n = 32, 48, 64; 0.224, 0.212, 0.190 at alpha_u = 0),
+    // nor at the velocity-based signal velocity (0.196, 0.181, 0.167): the switch lets alpha fall
+    // where the chapter's alpha = 1 damps the tension-driven flow (docs/cases/square.md).
+    const std::string cause =
+        "the sharp contact's pressure blip (the summation density (27) smooths the step over h while u keeps it), "
+        "which the conduction does not remove and the viscosity switch, falling to its floor away from shocks, "
+        "leaves undamped: ";
+    c["v_rms"] = known_failure(v_rms, cause + "v_rms = {v_rms} of c_out at {levels}, observed order {order.v_rms}; the "
+                                              "same scheme's smooth step (velocity-based conduction) converges",
+                               gradh_smooth);
+    c["L1_rho"] = known_failure(l1, cause + "L1_rho {L1_rho} at {levels}, observed order {order.L1_rho}; the same "
+                                            "scheme's smooth step (velocity-based conduction) converges",
+                                gradh_smooth);
+    c["misfit"] = known_failure(misfit, cause + "misfit {misfit} at {levels}, observed order {order.misfit}; the "
+                                                "chapter's scheme at a quarter of the end time, before the blip's "
+                                                "tension has rounded the corners, converges",
+                                "t_end=0.25");
+    return c;
+  }
   c["v_rms"] = known_failure(
       v_rms,
       "the density-energy form's spurious surface tension at the sharp contact: the summation density (27) smooths the "
@@ -225,8 +285,22 @@ const Registration reg{Case{
                  {"t_end=0.25"},
                  {"v_adv=0.3"},
                  {"kernel=quintic_spline"},
-                 {"kernel=wendland_c4"}},
+                 {"kernel=wendland_c4"},
+                 {"scheme=gradh_switches"},
+                 {"scheme=gradh_switches", "lattice=one", "width=0.05"},
+                 {"scheme=gradh_switches", "lattice=one", "width=0.05", "vsig_u=velocity"}},
     .levels_for = [](const Params& p) {
+      // The grad-h scheme costs about 2.5 times the chapter's run (n = 48). Its sharp step's errors stay
+      // level from n = 32 (the claims): 32, 48, 64 show it.
+      if (gradh(p) && !smooth(p) && !early(p))
+        return Levels{.quick = {32, 64}, .standard = {32, 48, 64}, .full = {32, 64, 128}};
+      // Its smooth step at Price's signal velocity: the noise is level from n = 32 (v_rms 1.22e-2,
+      // 1.10e-2, 1.05e-2 on 32, 64, 128); at the velocity-based one the acoustic pattern's phase
+      // makes 48 and 96 stray (v_rms local order 0.62 from 32 to 48, 4.0 from 48 to 64): doubled.
+      if (pressure_conduction(p) && smooth(p))
+        return Levels{.quick = {32, 64}, .standard = {32, 64}, .full = {32, 64, 128}};
+      if (gradh(p) && smooth(p))
+        return Levels{.quick = {32, 64}, .standard = {32, 64, 128}, .full = {32, 64, 128, 256}};
       // At alpha = 0.1 the local order from 32 to 64 is 2.33, at the window's edge: quick doubles
       // from 64 (2.12).
       if (smooth(p) && !full_viscosity(p))
