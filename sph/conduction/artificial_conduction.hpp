@@ -35,7 +35,7 @@ struct ArtificialConduction {
     const double rho = 0.5 * (p.rho[q.i] + p.rho[q.j]);
     const double r = q.r > 0.0 ? q.r : 1.0;  // coincident pairs: r_ij = 0
     const double vsig = by_pressure * std::sqrt(std::abs(p.p[q.i] - p.p[q.j]) / rho) +
-                        by_velocity * std::abs((p.v[q.i] - p.v[q.j]).dot(q.rij)) / r;
+                        by_velocity * std::abs((q.vi - q.vj).dot(q.rij)) / r;
     const double F = 0.5 * (q.gradWi + q.gradWj).dot(q.rij) / r;
     s.dudt += p.m[q.j] * alpha_u * vsig * (p.u[q.i] - p.u[q.j]) * F / rho;
   }
