@@ -544,11 +544,14 @@ def main():
         old.unlink()
     out.mkdir(parents=True, exist_ok=True)
 
-    made = []
+    # The cases with the most runs first (their figures dominate): the workers then end together,
+    # instead of one drawing the largest case alone at the end. The figures are listed in the cases'
+    # order whatever order they were drawn in.
     jobs = [(case, ss, a.results, out, not a.bundle) for case, ss in sorted(sweeps.items())]
+    work = sorted(jobs, key=lambda j: -sum(len(s.get("runs", [])) for s in j[1]))
     with ProcessPoolExecutor(max_workers=max(1, min(len(jobs), os.cpu_count() or 1))) as pool:  # figures dominate
-        for m in pool.map(write_case_page, jobs):
-            made += m
+        drawn_by_case = dict(zip((j[0] for j in work), pool.map(write_case_page, work)))
+    made = [m for case, *_ in jobs for m in drawn_by_case[case]]
     km_file = a.mutants or ROOT / "runs" / "mutants" / "kill_matrix.json"
     mutants_link = None
     if a.mutants or km_file.is_file():
