@@ -5,40 +5,85 @@
 // div v_i its trace, |curl v_i| the norm of its antisymmetric part (sum over a < b of the
 // squared differences of the transposed entries, in any dimension: 0 in 1D). The viscosity switch
 // reads them (hydro/viscosity_switch.hpp).
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <vector>
 
 #include "sph/core/box.hpp"
 #include "sph/core/particles.hpp"
-#include "sph/core/threads.hpp"
+#include "sph/hydro/pairs.hpp"
 #include "sph/search/neighbour_list.hpp"
 
 namespace sph {
 
+// Over the listed pairs of each particle (pairs beyond h_i add 0: dW/dr vanishes there), in the
+// pair loops' copies (for_each_particle): each batch's shares computed without a branch in one
+// vectorised loop, then summed in list order, so that the result does not depend on the vector
+// width or the thread count. xs, vs: the caller's buffers for the positions' and velocities'
+// columns, kept from one call to the next (see Scene::xs, hydro/scene.hpp).
 template <int D, class K>
 void velocity_divergence_curl(const Particles<D>& p, const NeighbourList& nl, const Box<D>& box,
-                              const std::vector<double>& omega, std::vector<double>& div, std::vector<double>& curl) {
+                              const std::vector<double>& omega, std::vector<double>& div, std::vector<double>& curl,
+                              Components<D>& xs, Components<D>& vs) {
   const std::size_t n = p.size();
   const Vec<D> L = box.length(), wrap = box.wrap_factor();
   div.resize(n);
   curl.resize(n);
-#pragma omp parallel for schedule(dynamic, 256) if (n >= parallel_threshold)
-  for (std::size_t i = 0; i < n; ++i) {
-    Eigen::Matrix<double, D, D> G = Eigen::Matrix<double, D, D>::Zero();
-    for (int j : nl.of(i)) {
-      const Vec<D> rij = min_image<D>(p.x[i] - p.x[j], L, wrap);
-      const double r = rij.norm();
-      const double g = r > 0.0 ? K::dWdr(r, p.h[i]) / r : 0.0;  // 0 beyond h_i
-      G += p.m[j] * (p.v[j] - p.v[i]) * (g * rij).transpose();
+  copy_components<D>(p.x, xs);
+  copy_components<D>(p.v, vs);
+  const double* m = p.m.data();
+  constexpr int pairs_ab = D * (D - 1) / 2;  // the entries above the diagonal, a < b (at most 3)
+  static_assert(D <= 3);
+  for_each_particle<D>(n, nl, [&](std::size_t i) {
+    constexpr int batch = 64;
+    // Of the batch's pairs: the trace of m_j (v_j - v_i) (x) grad_i W_ij(h_i), and its entries
+    // (a, b) less (b, a) above the diagonal: the only parts of the gradient the switch reads.
+    double trace_share[batch], anti_share[pairs_ab > 0 ? pairs_ab : 1][batch];
+    // The sums, one local each (an array of them is kept in memory, and each pair's add then
+    // waits on the last one's store).
+    double trace = 0.0, anti0 = 0.0, anti1 = 0.0, anti2 = 0.0;
+    const int* js = nl.j.data() + nl.offset[i];
+    const int count = static_cast<int>(nl.offset[i + 1] - nl.offset[i]);
+    const double hi = p.h[i];
+    for (int t0 = 0; t0 < count; t0 += batch) {
+      const int nb = std::min(count - t0, batch);
+#pragma omp simd
+      for (int t = 0; t < nb; ++t) {
+        const int j = js[t0 + t];
+        double rij[D], dv[D];
+        double r2 = 0.0;
+#pragma GCC unroll 3
+        for (int d = 0; d < D; ++d) {
+          rij[d] = min_image(xs[d][i] - xs[d][j], L[d], wrap[d]);
+          r2 += rij[d] * rij[d];
+          dv[d] = m[j] * (vs[d][j] - vs[d][i]);
+        }
+        const double r = std::sqrt(r2);
+        const double g = r > 0.0 ? K::dWdr(r, hi) / r : 0.0;  // 0 beyond h_i
+        double tr = 0.0;
+#pragma GCC unroll 3
+        for (int d = 0; d < D; ++d) tr += dv[d] * (g * rij[d]);
+        trace_share[t] = tr;
+        int k = 0;
+#pragma GCC unroll 3
+        for (int a = 0; a < D; ++a)
+#pragma GCC unroll 3
+          for (int b = a + 1; b < D; ++b) anti_share[k++][t] = dv[a] * (g * rij[b]) - dv[b] * (g * rij[a]);
+      }
+      for (int t = 0; t < nb; ++t) {
+        trace += trace_share[t];
+        if constexpr (pairs_ab > 0) anti0 += anti_share[0][t];
+        if constexpr (pairs_ab > 1) anti1 += anti_share[1][t], anti2 += anti_share[2][t];
+      }
     }
-    G /= omega[i] * p.rho[i];
+    const double s = omega[i] * p.rho[i];
+    const double anti[3] = {anti0 / s, anti1 / s, anti2 / s};
     double c2 = 0.0;
-    for (int a = 0; a < D; ++a)
-      for (int b = a + 1; b < D; ++b) c2 += (G(a, b) - G(b, a)) * (G(a, b) - G(b, a));
-    div[i] = G.trace();
+    for (int k = 0; k < pairs_ab; ++k) c2 += anti[k] * anti[k];
+    div[i] = trace / s;
     curl[i] = std::sqrt(c2);
-  }
+  });
 }
 
 }  // namespace sph

@@ -91,7 +91,7 @@ class GradhSwitches {
     if (!nb.lists) throw std::logic_error("scheme gradh_switches sets h in the density phase, on reused lists");
     h_solver_.solve(p, *nb.lists, nb.list, nb.box, h_);
     grad_h_omega<D>(p, h_solver_.drho_dh(), omega_);
-    velocity_divergence_curl<D, K>(p, nb.list, nb.box, omega_, div_, curl_);
+    velocity_divergence_curl<D, K>(p, nb.list, nb.box, omega_, div_, curl_, xs_, vs_);
     switch_.observe(div_, curl_);
   }
 
@@ -126,6 +126,7 @@ class GradhSwitches {
   SmoothingLengthControl h_;
   FixedNeighboursNewton<D, K, true> h_solver_;
   std::vector<double> omega_, div_, curl_;
+  Components<D> xs_, vs_;  // velocity_divergence_curl's buffers
   ViscositySwitch<D> switch_;
   Forces forces_;
 };

@@ -155,7 +155,8 @@ TEST_CASE("gradh_switches: div v and curl v equal a direct sum over all pairs", 
   const std::size_t n = p.size();
   std::vector<double> omega(n), div, curl;
   for (std::size_t i = 0; i < n; ++i) omega[i] = 0.8 + 0.4 * std::cos(7.0 * i);
-  sph::velocity_divergence_curl<D, K>(p, sph::grid_search<D>(p.x, p.h, box), box, omega, div, curl);
+  sph::Components<D> xs, vs;
+  sph::velocity_divergence_curl<D, K>(p, sph::grid_search<D>(p.x, p.h, box), box, omega, div, curl, xs, vs);
   double worst = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
     Eigen::Matrix2d G = Eigen::Matrix2d::Zero(), S = Eigen::Matrix2d::Zero();
