@@ -88,7 +88,7 @@ TEST_CASE("acceptance: a window that admits half the order is never verified", "
   CHECK(provisional_for(sweep(sphv::derived_band(2.0, 1.0, "between", "anything"), runs(levels4, 2.0)), "window_e"));
 }
 
-TEST_CASE("acceptance: the standard error never widens the window; a noisy fit is not verified", "[acceptance]") {
+TEST_CASE("acceptance: the standard error never widens the window, and a noisy fit is not verified", "[acceptance]") {
   const sphv::OrderClaim first{1.0, 0.25, "first order"};
   // Observed about 0.67 with a large standard error: inside the former window, outside the rule's.
   const auto low = sweep(first, runs(levels4, 0.55, 0.2));

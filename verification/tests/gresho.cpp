@@ -26,7 +26,7 @@ TEST_CASE("gresho: the pressure balances the vortex's rotation (dp/dr = rho v_ph
   }
 }
 
-TEST_CASE("gresho: the standard set-up's profile (Gresho & Chan 1990; Liska & Wendroff 2003)", "[gresho]") {
+TEST_CASE("gresho: the standard set-up's profile (Gresho & Chan 1990, Liska & Wendroff 2003)", "[gresho]") {
   const reference::GreshoVortex g(1.0, 5.0, 5.0 / 3.0);
   CHECK(g.v_phi(0.1) == Approx(0.5).epsilon(1e-15));
   CHECK(g.v_phi(0.2) == Approx(1.0).epsilon(1e-15));

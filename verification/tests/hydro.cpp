@@ -448,7 +448,10 @@ TEST_CASE("extreme Riemann presets: the outcome each must have, and the method t
     INFO(e.preset << " energy " << e.energy << ": " << r.verdict);
     if (e.stable) {
       CHECK(r.verdict == "stable");
-      REQUIRE(r.errors.size() == 4);
+      // The four L1 errors, and the contact's where its window holds particles enough (not in
+      // Toro 2's near vacuum).
+      for (const char* k : {"L1_rho", "L1_v", "L1_p", "L1_u"}) REQUIRE(r.errors.count(k) == 1);
+      REQUIRE(r.errors.size() - r.errors.count("L1_p_contact") == 4);
       for (const auto& [k, v] : r.errors) CHECK(std::isfinite(v));
       CHECK(r.errors.at("L1_rho") <= 1.2 * e.l1_rho_measured);
     } else {

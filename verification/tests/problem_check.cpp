@@ -132,8 +132,8 @@ TEST_CASE("problem check: Sedov's ambient gas of another density or a blast of a
   CHECK(cause(energy).starts_with("the time or E: "));
 }
 
-TEST_CASE("problem check: the sound wave's, the square's and the polytrope's initial conditions read ok; of another "
-          "pressure or mass, mismatch",
+TEST_CASE("problem check: the sound wave's, the square's and the polytrope's initial conditions read ok, and of another "
+          "pressure or mass mismatch",
           "[score][problem]") {
   for (const char* name : {"sound_wave", "square"}) {
     INFO(name);

@@ -348,7 +348,7 @@ set_tests_properties(score_mismatch_gamma PROPERTIES PASS_REGULAR_EXPRESSION "mi
 add_test(NAME runner_physics_claim COMMAND bash -c
   "rm -rf runner_claim && $<TARGET_FILE:sphv> --threads 1 sweep sod --levels 400,800,1600 --set gamma=5/3 --runner 'bash ${CMAKE_SOURCE_DIR}/verification/tests/external_code.sh $<TARGET_FILE:sphv> sod {n} {out} csv gamma=5/3' --out runner_claim; s=$?; test $s -eq 0 && echo PASS"
   WORKING_DIRECTORY ${_sdir})
-set_tests_properties(runner_physics_claim PROPERTIES PASS_REGULAR_EXPRESSION "L1_p [^\n]* verified[^\n]*\n[^\n]*L1_rho [^\n]* verified[^\n]*\n[^\n]*L1_u [^\n]* verified[^\n]*\n[^\n]*L1_v [^\n]* verified.*PASS"
+set_tests_properties(runner_physics_claim PROPERTIES PASS_REGULAR_EXPRESSION "L1_p [^\n]* verified[^\n]*\n[^\n]*L1_p_contact [^\n]* verified[^\n]*\n[^\n]*L1_rho [^\n]* verified[^\n]*\n[^\n]*L1_u [^\n]* verified[^\n]*\n[^\n]*L1_v [^\n]* verified.*PASS"
   FAIL_REGULAR_EXPRESSION "no order claimed")
 add_test(NAME runner_claim_fails_exit_1 COMMAND bash -c
   "rm -rf runner_half && EXTERNAL_CODE_FAULT=half_order $<TARGET_FILE:sphv> --threads 1 sweep sod --levels 400,800,1600 --set gamma=5/3 --runner 'bash ${CMAKE_SOURCE_DIR}/verification/tests/external_code.sh $<TARGET_FILE:sphv> sod {n} {out} csv gamma=5/3' --out runner_half; s=$?; test $s -eq 1 && echo PASS"
