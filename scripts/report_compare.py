@@ -167,7 +167,8 @@ def errors(members):
 
 def comparison(members, error):
     """The comparison of one error over a group: (n_fixed, t_fixed, rows), rows one per member:
-    value, error at n_fixed, its wall time, error at cost t_fixed, order and s.e., expected, outcome.
+    value, error at n_fixed, its wall time, error at cost t_fixed, order with its s.e. and local orders,
+    the claim with its window (a one-sided claim's has no upper edge), outcome.
     n_fixed: the finest level every member ran with a finite error; t_fixed: the largest wall time
     within every member's curve (the cheapest member's costliest run, where the others reach it),
     None when the curves share no wall time."""
@@ -185,8 +186,9 @@ def comparison(members, error):
         at_n = next(((t, y) for n, t, y in p if n == n_fixed), (None, None))
         rows.append({"value": value, "variant": s["variant"], "at_n": at_n[1], "wall_at_n": at_n[0],
                      "at_cost": at_cost(p, t_fixed) if t_fixed is not None else None,
-                     "observed": row.get("observed"), "se": row.get("se"), "expected": row.get("expected"),
-                     "band": row.get("band"), "outcome": row["outcome"], "levels": [q[0] for q in p],
+                     "observed": row.get("observed"), "se": row.get("se"), "local_orders": row.get("local_orders"),
+                     "expected": row.get("expected"), "band": row.get("band"), "window": row.get("window"),
+                     "outcome": row["outcome"], "levels": [q[0] for q in p],
                      "sweep_wall_s": s.get("wall_time_s")})
     return n_fixed, t_fixed, rows
 

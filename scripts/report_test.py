@@ -142,8 +142,9 @@ def compared_groups(sweeps, key):
 
 
 def table_rows(section):
-    """The rows of a comparison table as (error, value, variant, numbers): the numbers are the
-    error at fixed n, the wall time there and the error at fixed cost, as shown."""
+    """The rows of a comparison table as (error, value, variant, numbers, claim): the numbers are the
+    error at fixed n, the wall time there and the error at fixed cost, as shown; claim the row's last
+    cell, the claim with its window."""
     rows, err = [], None
     for tr in re.findall(r"<tr[^>]*>(.*?)</tr>", section)[1:]:
         m = re.match(r"<td rowspan=\d+>([^<]*)<br>", tr)
@@ -151,7 +152,8 @@ def table_rows(section):
             err = html.unescape(m.group(1))
         cells = re.findall(r"<td class='(?:nw|var)'>([^<]*)</td>", tr)
         nums = re.findall(r"<td class='num'>(?:<b>)?([^<]*)", tr)
-        rows.append((err, html.unescape(cells[0]), html.unescape(cells[1]), nums[:3]))
+        claim = re.findall(r"<td class='num'>([^<]*)</td><td class='(?:verified|known|provisional|noclaim|fail)'>", tr)
+        rows.append((err, html.unescape(cells[0]), html.unescape(cells[1]), nums[:3], html.unescape(claim[-1]) if claim else None))
     return rows
 
 
@@ -210,6 +212,13 @@ def comparison_checks(out, sweeps, key):
             n_fixed = max(set.intersection(*({n for n, _, _ in c} for c in curves.values())))
             cost = min(max(t for _, t, _ in c) for c in curves.values())
             got = {r[1]: r[3] for r in rows if r[0] == err}
+            for v, s in members:  # the claim as the sweep states it: a one-sided claim is "at least p", never "p ± 0"
+                row = next(r for r in s["rows"] if r["error"] == err)
+                lo, hi = (list(row.get("window") or []) + [None, None])[:2]
+                want = ("none" if not num(row.get("expected")) else f"at least {lo:.3g}" if num(lo) and not num(hi)
+                        else f"[{lo:.3g}, {hi:.3g}]" if num(lo) and num(hi) else f"{row['expected']:.3g}")
+                shown = next((r[4] for r in rows if r[0] == err and r[1] == v), None)
+                expect(shown is not None and want in shown, f"{case} {label} {err} {v}: claim shown {shown!r}, the sweep's {want!r}")
             at_n = {}
             for v, c in curves.items():
                 at_n[v] = next((t, y) for n, t, y in c if n == n_fixed)
