@@ -106,7 +106,8 @@ def is_name(t):
     with subscripts: a word for its base that is no Greek letter, function or norm, and words for
     all its subscripts."""
     base, *subs = t.split("_")
-    if len(subs) > 1 and any(len(x) > 1 for x in [base] + subs):  # n24_L1_v, drift_baseline_present
+    norm = re.fullmatch(r"L(\d+|inf)", base)  # L1_p_contact: a norm of p_contact, as L1_rho is of rho
+    if len(subs) > 1 and not norm and any(len(x) > 1 for x in [base] + subs):  # n24_L1_v, drift_baseline_present
         return True
     if base in FUNCS and any(len(x) > 1 and re.search(r"\d", x) for x in subs):  # sum_1d: a name, not a sum
         return True
