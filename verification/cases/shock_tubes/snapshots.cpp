@@ -274,11 +274,11 @@ Result score_tube(const Params& prm, const Snapshot& s) {
   const auto& m = s.at("m", who);
   for (std::size_t i = 0; i < s.size(); ++i) st.spacing.push_back(std::pow(m[i] / st.rho[i], 1.0 / s.dim));
   r.errors = tube_l1_errors(st.x, st.v, st.rho, st.p, st.u, m, s.size(), exact, pr.t_end, &outside);
-  double blip = 0.0;
-  if (s.dim == 1) tube_contact_error(st.x, st.rho, st.p, m, s.size(), exact, pr.t_end, r.errors, blip);
-  if (r.errors.count("L1_p_contact")) r.extra["contact_blip"] = blip;
   if (outside == s.size())
     throw InputError(f + ": no particle lies in the tube's domain " + domain + " (--set domain=x_lo,x_hi)");
+  if (s.dim == 1)
+    if (const auto contact = tube_contact_error(st.x, st.rho, st.p, m, s.size(), exact, pr.t_end))
+      r.errors["L1_p_contact"] = contact->l1, r.extra["contact_blip"] = contact->amplitude;
   r.extra["particles_scored"] = s.size() - outside;
   r.extra["window"] = "the domain " + domain + (outside > 0 && pr.ends == "open" ? ": the rest lie outside it, not scored" : "");
   r.extra["x0"] = pr.x0;

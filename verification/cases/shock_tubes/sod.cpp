@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <tuple>
 
 #include "sph/hydro/forms.hpp"
@@ -150,13 +151,14 @@ Result run(const Params& p) {
   const TubeExact tube(pr);
   const reference::RiemannSolution& exact = tube.at_x0();
   Result r;
-  double blip = 0.0;  // the contact's pressure blip (tube_contact_error)
+  std::optional<ContactError> contact;  // 1D: the contact's pressure error and blip
   r.n_particles = run.x.size();
   r.verdict = run.outcome.verdict;
   if (r.verdict == "ok" && p.text("preset") != "sod") r.verdict = "stable";
   if (r.verdict == "ok" || r.verdict == "stable") {
     r.errors = tube_l1_errors(run.x, run.v, run.rho, run.p, run.u, run.m, run.active, tube, pr.t_end);
-    if constexpr (D == 1) tube_contact_error(run.x, run.rho, run.p, run.m, run.active, tube, pr.t_end, r.errors, blip);
+    if constexpr (D == 1) contact = tube_contact_error(run.x, run.rho, run.p, run.m, run.active, tube, pr.t_end);
+    if (contact) r.errors["L1_p_contact"] = contact->l1;
     r.figures = {profile("rho", "density rho", run, run.rho, exact, pr.t_end, n, D),
                  profile("v", "velocity v_x", run, run.v, exact, pr.t_end, n, D),
                  profile("p", "pressure p", run, run.p, exact, pr.t_end, n, D),
@@ -173,7 +175,7 @@ Result run(const Params& p) {
              {"energy_rate", run.energy_rate},
              {"mass_drift", run.mass_drift},
              {"conservation_note", "active particles only; the boundary layers exert the end pressures"}};
-  if (r.errors.count("L1_p_contact")) r.extra["contact_blip"] = blip;
+  if (contact) r.extra["contact_blip"] = contact->amplitude;
   // The run's kernel's sums, on the initial lattice and (D > 1) on the one the shock compresses.
   LatticeSums sums, lc;
   const double c = D > 1 ? shock_compression(p) : 1.0;
