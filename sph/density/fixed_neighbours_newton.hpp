@@ -90,7 +90,7 @@ class FixedNeighboursNewton {
     copy_components<D>(p.x, xs_);
     drho_.resize(n);
     next_.resize(n);
-    off_.resize(n);
+    far_.resize(n);
     lo_.assign(n, 0.0);
     hi_.assign(n, std::numeric_limits<double>::infinity());
     mark_.assign(n, 0);
@@ -116,12 +116,13 @@ class FixedNeighboursNewton {
       });
       if (last) break;
       // The particles that change, in the pass's order; their neighbours are marked for the next.
-      auto changes = [&](double tol) {
+      auto changes = [&](bool within_tol_too) {
         changed_.clear();
         for (int i : which_)
-          if (off_[i] >= tol && next_[i] != p.h[i]) changed_.push_back(i);
+          if ((far_[i] == Fit::beyond || (within_tol_too && far_[i] == Fit::within)) && next_[i] != p.h[i])
+            changed_.push_back(i);
       };
-      changes(c.tol);
+      changes(false);
       if (changed_.empty()) {
         out.converged = true;
         offset_.resize(n);
@@ -131,7 +132,7 @@ class FixedNeighboursNewton {
         break;
       }
       if (2 * mark(list) >= n) {
-        changes(0.0);
+        changes(true);
         mark(list);
       }
       out.changed += changed_.size();
@@ -177,7 +178,9 @@ class FixedNeighboursNewton {
         const double r = std::sqrt(distance2<D>(i, j, xs_, L, wrap)), hij = own_h ? hi : h_ij(hi, h[j]);
         const double W = K::W(r, hij);
         w[t] = m[j] * W;
-        dw[t] = -m[j] * (D * W + r * K::dWdr(r, hij)) / hij;  // dW/dh_ij (h_i and h_j changing alike, or h_i's own)
+        // dW/dh_ij (h_i and h_j changing alike, or h_i's own), with the kernel's own 1 / h_ij: one
+        // division a pair, not two.
+        dw[t] = -m[j] * (D * W + r * K::dWdr(r, hij)) * (1.0 / hij);
       }
       for (int t = 0; t < nb; ++t) rho += w[t], drho += dw[t];
     }
@@ -207,7 +210,10 @@ class FixedNeighboursNewton {
     }
   }
 
-  // next_[i]: the h that i's pass proposes (above); off_[i]: how far h_i is from (50) with rho_i.
+  // next_[i]: the h that i's pass proposes (above); far_[i]: whether h_i is within tol of (50)'s
+  // h with rho_i, |hfact (m_i/rho_i)^(1/D) - h_i| < tol h_i, tested as the D-th power of that ratio,
+  // (m_i (hfact/h_i)^D / rho_i) against (1 -+ tol)^D: no root is taken for a particle that keeps
+  // Newton's step (the root of (50)'s fixed point is the pass's costliest operation a particle).
   void propose(std::size_t i, const Particles<D>& p, const SmoothingLengthControl& c) {
     const double h = p.h[i], rho = p.rho[i];
     const double target = p.m[i] * kernel_power<D>(c.hfact / h);  // (50)'s density at h
@@ -229,18 +235,29 @@ class FixedNeighboursNewton {
     // the root as closely as it can be represented, and stays (the midpoint of an open bracket would
     // be infinite).
     auto inside = [&](double x) { return x > lo && x < hi; };
-    const double fixed = c.hfact * std::pow(p.m[i] / rho, 1.0 / D);  // (50)
-    off_[i] = std::abs(fixed - h) / h;
+    const double ratio = target / rho;  // (fixed / h)^D with (50)'s fixed point below
+    far_[i] = ratio >= kernel_power<D>(1.0 + c.tol) || ratio <= kernel_power<D>(1.0 - c.tol) ? Fit::beyond
+              : ratio == ratio                                                               ? Fit::within
+                                                                                             : Fit::undefined;
     double h_new = h;
     if (f != 0.0) {
       const double newton = h - f / fp;
-      h_new = fp > 0.0 && inside(newton) ? newton : inside(fixed) ? fixed : newton == h ? h : 0.5 * (lo + hi);
+      if (fp > 0.0 && inside(newton)) {
+        h_new = newton;
+      } else {
+        const double fixed = c.hfact * std::pow(p.m[i] / rho, 1.0 / D);  // (50)
+        h_new = inside(fixed) ? fixed : newton == h ? h : 0.5 * (lo + hi);
+      }
     }
     next_[i] = h_new < c.h_max ? h_new : c.h_max;
   }
 
   Components<D> xs_;  // the positions' columns (kept from one phase to the next, Scene::xs)
-  std::vector<double> drho_, next_, off_, lo_, hi_;
+  std::vector<double> drho_, next_, lo_, hi_;
+  // How h_i fits (50) with rho_i: within tol, beyond it, or not comparable (rho_i not a number:
+  // the particle is left as it is, and the step's check names it).
+  enum class Fit : unsigned char { within, beyond, undefined };
+  std::vector<Fit> far_;
   // The offsets of the next start (above), and the lists and renumbering they were taken under.
   std::vector<double> offset_;
   std::uint64_t offset_serial_ = 0;
