@@ -62,7 +62,11 @@ def main(argv):
         for (ea, oa), (eb, ob) in zip(key(a[k])[4], key(b[k])[4])
         if oa != ob
     ]
-    print(f"compare-sweeps: numbers differ in {len(bad)} of {len(a)} sweeps ({points} points)")
+    parts = ("runs", "observed orders", "claims", "checks", "outcomes")
+    print(f"compare-sweeps: {len(bad)} of {len(a)} sweeps differ ({points} points):")
+    for k in bad:
+        what = [name for name, x, y in zip(parts, key(a[k]), key(b[k])) if x != y]
+        print(f"  {k[0]} [{k[1]}]: {', '.join(what)}")
     print(f"outcomes changed: {len(outcome_changes)}")
     for line in outcome_changes:
         print(f"  {line}")
