@@ -90,7 +90,8 @@ class FixedNeighboursNewton {
     copy_components<D>(p.x, xs_);
     drho_.resize(n);
     next_.resize(n);
-    far_.resize(n);
+    fit_.resize(n);
+    fit_lo_ = kernel_power<D>(1.0 - c.tol), fit_hi_ = kernel_power<D>(1.0 + c.tol);
     lo_.assign(n, 0.0);
     hi_.assign(n, std::numeric_limits<double>::infinity());
     mark_.assign(n, 0);
@@ -119,7 +120,7 @@ class FixedNeighboursNewton {
       auto changes = [&](bool within_tol_too) {
         changed_.clear();
         for (int i : which_)
-          if ((far_[i] == Fit::beyond || (within_tol_too && far_[i] == Fit::within)) && next_[i] != p.h[i])
+          if ((fit_[i] == Fit::beyond || (within_tol_too && fit_[i] == Fit::within)) && next_[i] != p.h[i])
             changed_.push_back(i);
       };
       changes(false);
@@ -210,7 +211,7 @@ class FixedNeighboursNewton {
     }
   }
 
-  // next_[i]: the h that i's pass proposes (above); far_[i]: whether h_i is within tol of (50)'s
+  // next_[i]: the h that i's pass proposes (above); fit_[i]: whether h_i is within tol of (50)'s
   // h with rho_i, |hfact (m_i/rho_i)^(1/D) - h_i| < tol h_i, tested as the D-th power of that ratio,
   // (m_i (hfact/h_i)^D / rho_i) against (1 -+ tol)^D: no root is taken for a particle that keeps
   // Newton's step (the root of (50)'s fixed point is the pass's costliest operation a particle).
@@ -236,9 +237,7 @@ class FixedNeighboursNewton {
     // be infinite).
     auto inside = [&](double x) { return x > lo && x < hi; };
     const double ratio = target / rho;  // (fixed / h)^D with (50)'s fixed point below
-    far_[i] = ratio >= kernel_power<D>(1.0 + c.tol) || ratio <= kernel_power<D>(1.0 - c.tol) ? Fit::beyond
-              : ratio == ratio                                                               ? Fit::within
-                                                                                             : Fit::undefined;
+    fit_[i] = ratio >= fit_hi_ || ratio <= fit_lo_ ? Fit::beyond : ratio == ratio ? Fit::within : Fit::undefined;
     double h_new = h;
     if (f != 0.0) {
       const double newton = h - f / fp;
@@ -257,7 +256,8 @@ class FixedNeighboursNewton {
   // How h_i fits (50) with rho_i: within tol, beyond it, or not comparable (rho_i not a number:
   // the particle is left as it is, and the step's check names it).
   enum class Fit : unsigned char { within, beyond, undefined };
-  std::vector<Fit> far_;
+  std::vector<Fit> fit_;
+  double fit_lo_ = 0.0, fit_hi_ = 0.0;  // (1 -+ tol)^D, the bounds of the ratio (propose), once a phase
   // The offsets of the next start (above), and the lists and renumbering they were taken under.
   std::vector<double> offset_;
   std::uint64_t offset_serial_ = 0;

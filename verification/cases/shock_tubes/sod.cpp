@@ -393,17 +393,23 @@ OrderClaims first_order(const Params& p, int dim) {
   // 3D: the affordable levels are pre-asymptotic (lattice_floor): the former first-order claim,
   // provisional under the acceptance rule.
   OrderClaim claim = dim < 3 ? at_least(0.74, why_first_order) : OrderClaim{1.0, 0.5, why_former};
+  // A known failure's reason as the contact's own error shows it (L1_p_contact's row quotes its
+  // numbers, not the tube's L1 errors of the other four rows).
+  const char* contact_failure = nullptr;
   // (29) is the Eulerian rate d(rho)/dt + v . grad rho: wrong by v . grad rho wherever a
   // density gradient moves (the contact), an O(1) error that does not converge (order about 0):
   // the claim every tube makes fails, and the default summation (27)
   // on the same tube is the experiment that converges.
-  if (p.text("density") == "continuity29")
+  if (p.text("density") == "continuity29") {
     claim = known_failure(claim,
                           "(29) is the Eulerian rate: wrong by v . grad rho at the moving contact, an O(1) error that "
                           "does not converge (L1_rho {L1_rho} at {levels}, order {order.L1_rho}); gated to stay above "
                           "a floor (half its measured value)",
                           "density=summation");
-  else if (p.text("euler") == "22")
+    contact_failure = "(29) is the Eulerian rate: wrong by v . grad rho at the moving contact, so the pressure there "
+                      "departs from p* by an O(1) blip that does not shrink (max |p/p* - 1| {extra.contact_blip}; "
+                      "L1_p_contact {L1_p_contact} at {levels}, order {order.L1_p_contact})";
+  } else if (p.text("euler") == "22") {
     // (22) weighs p_j alone: the force of i on j is not that of j on i, momentum is not conserved,
     // and across the shock the discrete jump conditions are not the exact ones, an error at the
     // shock that does not vanish with h. Between contact and shock the same unbalanced forces
@@ -417,7 +423,10 @@ OrderClaims first_order(const Params& p, int dim) {
                           "levels (L1_p {L1_p}, L1_u {L1_u}, L1_v {L1_v} at {levels}; orders {order.L1_p}, "
                           "{order.L1_u}, {order.L1_v})",
                           "euler=23");
-  else if (lattice_floor(p, dim))
+    contact_failure = "(22) is not antisymmetric in i and j: the unbalanced forces that drive the velocity noise "
+                      "between contact and shock raise the contact's pressure blip with n (max |p/p* - 1| "
+                      "{extra.contact_blip}; L1_p_contact {L1_p_contact} at {levels}, order {order.L1_p_contact})";
+  } else if (lattice_floor(p, dim))
     // The tube's lattices keep h/dx = hfact on either side and, behind the shock, a lattice
     // compressed along the tube whose sums across it are further off (lattice_floor): the errors
     // stop falling at a level set by hfact, not n. The variant at hfact 6 (every sum within
@@ -433,19 +442,9 @@ OrderClaims first_order(const Params& p, int dim) {
     if (find_case(dim == 1 ? "sod" : "sod" + std::to_string(dim) + "d").method_in_catalogue(p)) claim.unbounded = true;
     else claim = no_order("method settings outside the catalogue's variants: no claim measured for this method, only the verdict is gated");
   }
-  // The contact's row states its own error's numbers: a verified row why_contact's, a known
-  // failure's the form's reason as the contact shows it (not the tube's L1 errors it shares
-  // with the other four rows).
   OrderClaim contact = claim;
-  if (contact.at_least && !contact.known_failure()) contact.why = why_contact;
-  else if (contact.known_failure() && p.text("density") == "continuity29")
-    contact.why = "(29) is the Eulerian rate: wrong by v . grad rho at the moving contact, so the pressure there "
-                  "departs from p* by an O(1) blip that does not shrink (max |p/p* - 1| {extra.contact_blip}; "
-                  "L1_p_contact {L1_p_contact} at {levels}, order {order.L1_p_contact})";
-  else if (contact.known_failure() && p.text("euler") == "22")
-    contact.why = "(22) is not antisymmetric in i and j: the unbalanced forces that drive the velocity noise "
-                  "between contact and shock raise the contact's pressure blip with n (max |p/p* - 1| "
-                  "{extra.contact_blip}; L1_p_contact {L1_p_contact} at {levels}, order {order.L1_p_contact})";
+  if (contact.known_failure() && contact_failure) contact.why = contact_failure;
+  else if (contact.at_least && !contact.known_failure()) contact.why = why_contact;
   return {{"L1_rho", claim}, {"L1_v", claim}, {"L1_p", claim}, {"L1_u", claim}, {"L1_p_contact", contact}};
 }
 
