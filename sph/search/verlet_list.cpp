@@ -69,19 +69,20 @@ inline std::size_t select_range(std::size_t first, std::size_t last, const Neigh
   return _mm256_fnmadd_pd(L, _mm256_sub_pd(_mm256_fmadd_pd(dx, wrap, shift), shift), dx);
 }
 
-// pairs_within in 3D with AVX2: four candidates at a time, their sites loaded whole and transposed,
-// the kept ones moved to the front of a 4-lane store (which may write up to three candidates
-// past them, later overwritten or beyond the count). The same operations as the compiled
-// loop with FMA contraction, so the same pairs (verification/tests/grid_search.cpp). Sites loaded
-// whole and transposed are faster than gathers from one array per dimension, their packing
-// included.
+// pairs_within in 2D and 3D with AVX2: four candidates at a time, their sites loaded whole and
+// transposed, the kept ones moved to the front of a 4-lane store (which may write up to three
+// candidates past them, later overwritten or beyond the count). The same operations as the
+// compiled loop with FMA contraction, so the same pairs (verification/tests/grid_search.cpp).
+// Sites loaded whole and transposed are faster than gathers from one array per dimension, their
+// packing included. In 2D a site's x[2] is not written, and not read.
+template <int D>
 [[gnu::target("avx2,fma")]] inline std::size_t pairs_within_avx2(std::size_t i, const int* cj, std::size_t count,
-                                                                  const Site* s, const Vec<3>& L, const Vec<3>& wrap,
+                                                                  const Site* s, const Vec<D>& L, const Vec<D>& wrap,
                                                                   int* js) {
-  const __m256d xi = _mm256_set1_pd(s[i].x[0]), yi = _mm256_set1_pd(s[i].x[1]), zi = _mm256_set1_pd(s[i].x[2]),
-                hi = _mm256_set1_pd(s[i].h);
-  const __m256d Lx = _mm256_set1_pd(L[0]), Ly = _mm256_set1_pd(L[1]), Lz = _mm256_set1_pd(L[2]);
-  const __m256d wx = _mm256_set1_pd(wrap[0]), wy = _mm256_set1_pd(wrap[1]), wz = _mm256_set1_pd(wrap[2]);
+  static_assert(D == 2 || D == 3);
+  const __m256d xi = _mm256_set1_pd(s[i].x[0]), yi = _mm256_set1_pd(s[i].x[1]), hi = _mm256_set1_pd(s[i].h);
+  const __m256d Lx = _mm256_set1_pd(L[0]), Ly = _mm256_set1_pd(L[1]);
+  const __m256d wx = _mm256_set1_pd(wrap[0]), wy = _mm256_set1_pd(wrap[1]);
   std::size_t used = 0, t = 0;
   for (; t + 4 <= count; t += 4) {
     const __m256d s0 = _mm256_load_pd(&s[cj[t]].x[0]), s1 = _mm256_load_pd(&s[cj[t + 1]].x[0]),
@@ -90,16 +91,20 @@ inline std::size_t select_range(std::size_t first, std::size_t last, const Neigh
                   d = _mm256_unpackhi_pd(s2, s3);
     const __m256d dx = image(_mm256_sub_pd(xi, _mm256_permute2f128_pd(a, c, 0x20)), Lx, wx),
                   dy = image(_mm256_sub_pd(yi, _mm256_permute2f128_pd(b, d, 0x20)), Ly, wy),
-                  dz = image(_mm256_sub_pd(zi, _mm256_permute2f128_pd(a, c, 0x31)), Lz, wz),
                   hm = _mm256_max_pd(hi, _mm256_permute2f128_pd(b, d, 0x31));
-    const __m256d r2 = _mm256_fmadd_pd(dz, dz, _mm256_fmadd_pd(dy, dy, _mm256_mul_pd(dx, dx)));
+    __m256d r2 = _mm256_fmadd_pd(dy, dy, _mm256_mul_pd(dx, dx));
+    if constexpr (D == 3) {
+      const __m256d dz = image(_mm256_sub_pd(_mm256_set1_pd(s[i].x[2]), _mm256_permute2f128_pd(a, c, 0x31)),
+                               _mm256_set1_pd(L[2]), _mm256_set1_pd(wrap[2]));
+      r2 = _mm256_fmadd_pd(dz, dz, r2);
+    }
     const int keep = _mm256_movemask_pd(_mm256_cmp_pd(r2, _mm256_mul_pd(hm, hm), _CMP_LT_OQ));
     const __m128i j4 = _mm_loadu_si128(reinterpret_cast<const __m128i*>(cj + t));
     _mm_storeu_si128(reinterpret_cast<__m128i*>(js + used),
                      _mm_shuffle_epi8(j4, _mm_loadu_si128(reinterpret_cast<const __m128i*>(compaction[keep].data()))));
     used += static_cast<std::size_t>(__builtin_popcount(keep));
   }
-  return used + pairs_within<3>(i, cj + t, count - t, s, L, wrap, js + used);
+  return used + pairs_within<D>(i, cj + t, count - t, s, L, wrap, js + used);
 }
 
 // min_image (core/box.hpp) of eight separations.
@@ -141,7 +146,7 @@ inline std::size_t select_range(std::size_t first, std::size_t last, const Neigh
     _mm256_storeu_si256(reinterpret_cast<__m256i*>(js + used), _mm256_maskz_compress_epi32(keep, j8));
     used += static_cast<std::size_t>(__builtin_popcount(keep));
   }
-  return used + pairs_within_avx2(i, cj + t, count - t, s, L, wrap, js + used);
+  return used + pairs_within_avx2<3>(i, cj + t, count - t, s, L, wrap, js + used);
 }
 
 template <int D>
@@ -151,7 +156,7 @@ template <int D>
                                                                        const Vec<D>& wrap, int* js, std::size_t* offset) {
   return select_range<D>(first, last, list, row, js, offset, [&](std::size_t i, const int* cj, std::size_t n,
                                                                  int* out) {
-    if constexpr (D == 3) return pairs_within_avx2(i, cj, n, s, L, wrap, out);
+    if constexpr (D >= 2) return pairs_within_avx2<D>(i, cj, n, s, L, wrap, out);
     else return pairs_within<D>(i, cj, n, s, L, wrap, out);
   });
 }
