@@ -80,9 +80,11 @@ template <int D>
                                                                   const Site* s, const Vec<D>& L, const Vec<D>& wrap,
                                                                   int* js) {
   static_assert(D == 2 || D == 3);
-  const __m256d xi = _mm256_set1_pd(s[i].x[0]), yi = _mm256_set1_pd(s[i].x[1]), hi = _mm256_set1_pd(s[i].h);
-  const __m256d Lx = _mm256_set1_pd(L[0]), Ly = _mm256_set1_pd(L[1]);
-  const __m256d wx = _mm256_set1_pd(wrap[0]), wy = _mm256_set1_pd(wrap[1]);
+  // The last dimension's (z in 3D; y again in 2D, where they go unused).
+  const __m256d xi = _mm256_set1_pd(s[i].x[0]), yi = _mm256_set1_pd(s[i].x[1]), zi = _mm256_set1_pd(s[i].x[D - 1]),
+                hi = _mm256_set1_pd(s[i].h);
+  const __m256d Lx = _mm256_set1_pd(L[0]), Ly = _mm256_set1_pd(L[1]), Lz = _mm256_set1_pd(L[D - 1]);
+  const __m256d wx = _mm256_set1_pd(wrap[0]), wy = _mm256_set1_pd(wrap[1]), wz = _mm256_set1_pd(wrap[D - 1]);
   std::size_t used = 0, t = 0;
   for (; t + 4 <= count; t += 4) {
     const __m256d s0 = _mm256_load_pd(&s[cj[t]].x[0]), s1 = _mm256_load_pd(&s[cj[t + 1]].x[0]),
@@ -94,8 +96,7 @@ template <int D>
                   hm = _mm256_max_pd(hi, _mm256_permute2f128_pd(b, d, 0x31));
     __m256d r2 = _mm256_fmadd_pd(dy, dy, _mm256_mul_pd(dx, dx));
     if constexpr (D == 3) {
-      const __m256d dz = image(_mm256_sub_pd(_mm256_set1_pd(s[i].x[2]), _mm256_permute2f128_pd(a, c, 0x31)),
-                               _mm256_set1_pd(L[2]), _mm256_set1_pd(wrap[2]));
+      const __m256d dz = image(_mm256_sub_pd(zi, _mm256_permute2f128_pd(a, c, 0x31)), Lz, wz);
       r2 = _mm256_fmadd_pd(dz, dz, r2);
     }
     const int keep = _mm256_movemask_pd(_mm256_cmp_pd(r2, _mm256_mul_pd(hm, hm), _CMP_LT_OQ));

@@ -210,7 +210,7 @@ OrderClaims noh_orders(const Params& p) {
 // initial h; below it only the swept mass is reported), so the levels start there. The shock
 // speed's local order is 0.42 from n = 20 to 24 and 1.17, 0.95 on to 28 and 32 (measured): the
 // standard tier's three (n = 28 holds 83,000 particles) do not resolve its order (se 0.21); the
-// full tier adds n = 32 (120,000 particles, about 2.5 times n = 28's time), where the rule
+// full tier adds n = 32 (120,000 particles, about twice n = 28's time), where the rule
 // verifies it (CPU times: docs/cases/noh.md).
 const Levels levels = {.quick = {100, 200}, .standard = {200, 400, 800}, .full = {200, 400, 800, 1600}};
 

@@ -426,7 +426,7 @@ OrderClaims first_order(const Params& p, int dim) {
     contact_failure = "(22) is not antisymmetric in i and j: the unbalanced forces that drive the velocity noise "
                       "between contact and shock raise the contact's pressure blip with n (max |p/p* - 1| "
                       "{extra.contact_blip}; L1_p_contact {L1_p_contact} at {levels}, order {order.L1_p_contact})";
-  } else if (lattice_floor(p, dim))
+  } else if (lattice_floor(p, dim)) {
     // The tube's lattices keep h/dx = hfact on either side and, behind the shock, a lattice
     // compressed along the tube whose sums across it are further off (lattice_floor): the errors
     // stop falling at a level set by hfact, not n. The variant at hfact 6 (every sum within
@@ -438,6 +438,7 @@ OrderClaims first_order(const Params& p, int dim) {
                           "{extra.shock_compression} times by {extra.compressed_lattice_S1_across_minus_1}, whatever n; "
                           "L1_rho {L1_rho} at {levels}",
                           dim == 2 ? "hfact=6" : "hfact=4");
+  }
   if (!measured(p, dim)) {
     if (find_case(dim == 1 ? "sod" : "sod" + std::to_string(dim) + "d").method_in_catalogue(p)) claim.unbounded = true;
     else claim = no_order("method settings outside the catalogue's variants: no claim measured for this method, only the verdict is gated");
