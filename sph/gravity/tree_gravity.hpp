@@ -68,44 +68,66 @@ constexpr int group_size = 32;
 using Lanes = unsigned;  // bit l set: target l takes part (at a node), or takes a source
 static_assert(group_size == 32 && sizeof(Lanes) == 4, "a group's targets are the bits of a 32-bit unsigned");
 
+// One source's terms at the targets (lanes) first .. first + block - 1 of a group, added where
+// bits takes it. A node's terms are its expansion about the centre of mass, y = r - r_CM ((81)
+// with the dipole (86) zero), as a Taylor series of the softened Green's function
+// g = (|y|^2 + eps^2)^(-1/2): phi = -G [M g + 1/2 S_ab d_a d_b g]. With eps = 0 the second term
+// is (81)'s -G Q_ab y_a y_b / (2 r^5), Q = 3 S - tr(S) I (84). a = -grad phi, so the quadrupole
+// enters the force. A particle (S = 0) takes the point-mass terms alone (Quadrupole false): its
+// second-order terms are exact zeros. The lanes compute the terms and keep them where they take
+// the source (a select: a lane that does not, such as the target itself, may see an infinite
+// term).
+constexpr int block = 8;
+template <bool Quadrupole>
+inline void add_source(const Source& src, Lanes bits, int first, const double* r0, const double* r1,
+                       const double* r2, double G, double eps2, double* ax, double* ay, double* az, double* phi,
+                       int* count) {
+  const double hG = 0.5 * G;
+  const double x = src.x, y = src.y, z = src.z, GM = src.GM;
+  const double S00 = src.S00, S01 = src.S01, S02 = src.S02, S11 = src.S11, S12 = src.S12, S22 = src.S22,
+               tr = src.tr;
+  for (int l = first; l < first + block; ++l) {
+    const double y0 = r0[l] - x, y1 = r1[l] - y, y2 = r2[l] - z;
+    const double inv = 1.0 / std::sqrt(y0 * y0 + y1 * y1 + y2 * y2 + eps2), inv2 = inv * inv, inv3 = inv * inv2;
+    double f = -(GM * inv), k3 = GM * inv3, g0 = -(k3 * y0), g1 = -(k3 * y1), g2 = -(k3 * y2);
+    if constexpr (Quadrupole) {
+      const double Sy0 = S00 * y0 + S01 * y1 + S02 * y2, Sy1 = S01 * y0 + S11 * y1 + S12 * y2,
+                   Sy2 = S02 * y0 + S12 * y1 + S22 * y2;
+      const double ySy = y0 * Sy0 + y1 * Sy1 + y2 * Sy2, inv5 = inv3 * inv2;
+      const double q = G * inv5, t = 1.5 * tr - 7.5 * ySy * inv2;
+      f -= hG * (3.0 * ySy * inv5 - tr * inv3);
+      g0 += q * (3.0 * Sy0 + t * y0), g1 += q * (3.0 * Sy1 + t * y1), g2 += q * (3.0 * Sy2 + t * y2);
+    }
+    const bool in = (bits >> l) & 1u;
+    phi[l] += in ? f : 0.0, ax[l] += in ? g0 : 0.0, ay[l] += in ? g1 : 0.0, az[l] += in ? g2 : 0.0;
+    count[l] += in;
+  }
+}
+
 // Potential and acceleration at the targets (lanes) of a group from the sources list[0 .. n),
-// lane l taking source list[k] when bit l of take[k] is set; each lane's terms are added in list
-// order. A node's is its expansion about the centre of mass, y = r - r_CM ((81) with the dipole
-// (86) zero), as a Taylor series of the softened Green's function g = (|y|^2 + eps^2)^(-1/2):
-// phi = -G [M g + 1/2 S_ab d_a d_b g]. With eps = 0 the second term is (81)'s
-// -G Q_ab y_a y_b / (2 r^5), Q = 3 S - tr(S) I (84). a = -grad phi, so the quadrupole enters the
-// force. A source's fields are read once for all the lanes, which compute its terms and keep
-// them where they take it (a select: a lane that does not take the source, such as the target
-// itself, may see an infinite term). Fewer than half of the lanes take a given source, yet this
-// is faster than per-target lists, whose sources would have to be gathered.
+// entries below `nodes` the tree's nodes, lane l taking source list[k] when bit l of take[k] is
+// set; each lane's terms are added in list order. A source's fields are read once for the
+// lanes, block lanes at a time; a block none of whose lanes takes the source is skipped (it
+// would add +0.0 to sums that start at +0.0 and never reach -0.0: the same sums). Fewer than half
+// of the lanes take a given source, and about a third of the blocks none, yet this is faster than
+// per-target lists, whose sources would have to be gathered.
 template <Multipole M>
-inline void sum_sources(const std::vector<Source>& s, const int* list, const Lanes* take, int n,
+inline void sum_sources(const std::vector<Source>& s, const int* list, const Lanes* take, int n, int nodes,
                         const double* r0, const double* r1, const double* r2, double G, double eps2, double* ax,
                         double* ay, double* az, double* phi, int* count) {
-  const double hG = 0.5 * G;
+  static_assert(group_size % block == 0);
   std::fill_n(ax, group_size, 0.0), std::fill_n(ay, group_size, 0.0), std::fill_n(az, group_size, 0.0);
   std::fill_n(phi, group_size, 0.0), std::fill_n(count, group_size, 0);
   for (int k = 0; k < n; ++k) {
     const Lanes bits = take[k];
     const Source& src = s[list[k]];
-    const double x = src.x, y = src.y, z = src.z, GM = src.GM;
-    const double S00 = src.S00, S01 = src.S01, S02 = src.S02, S11 = src.S11, S12 = src.S12, S22 = src.S22,
-                 tr = src.tr;
-    for (int l = 0; l < group_size; ++l) {
-      const double y0 = r0[l] - x, y1 = r1[l] - y, y2 = r2[l] - z;
-      const double inv = 1.0 / std::sqrt(y0 * y0 + y1 * y1 + y2 * y2 + eps2), inv2 = inv * inv, inv3 = inv * inv2;
-      double f = -(GM * inv), k3 = GM * inv3, g0 = -(k3 * y0), g1 = -(k3 * y1), g2 = -(k3 * y2);
-      if constexpr (M == Multipole::quadrupole) {
-        const double Sy0 = S00 * y0 + S01 * y1 + S02 * y2, Sy1 = S01 * y0 + S11 * y1 + S12 * y2,
-                     Sy2 = S02 * y0 + S12 * y1 + S22 * y2;
-        const double ySy = y0 * Sy0 + y1 * Sy1 + y2 * Sy2, inv5 = inv3 * inv2;
-        const double q = G * inv5, t = 1.5 * tr - 7.5 * ySy * inv2;
-        f -= hG * (3.0 * ySy * inv5 - tr * inv3);
-        g0 += q * (3.0 * Sy0 + t * y0), g1 += q * (3.0 * Sy1 + t * y1), g2 += q * (3.0 * Sy2 + t * y2);
-      }
-      const bool in = (bits >> l) & 1u;
-      phi[l] += in ? f : 0.0, ax[l] += in ? g0 : 0.0, ay[l] += in ? g1 : 0.0, az[l] += in ? g2 : 0.0;
-      count[l] += in;
+    const bool quadrupole = M == Multipole::quadrupole && list[k] < nodes;
+    for (int b = 0; b < group_size; b += block) {
+      if (((bits >> b) & ((Lanes{1} << block) - 1)) == 0) continue;
+      if (quadrupole)
+        add_source<true>(src, bits, b, r0, r1, r2, G, eps2, ax, ay, az, phi, count);
+      else
+        add_source<false>(src, bits, b, r0, r1, r2, G, eps2, ax, ay, az, phi, count);
     }
   }
 }
@@ -234,7 +256,8 @@ void walk(const Walk& w, Lanes in, Group& g) {
 template <Multipole M, Opening O>
 void group_field(const Walk& w, Lanes in, Group& g) {
   walk<O>(w, in, g);
-  sum_sources<M>(w.sources, g.list.data(), g.take.data(), static_cast<int>(g.list.size()), g.x, g.y, g.z, w.G,
+  sum_sources<M>(w.sources, g.list.data(), g.take.data(), static_cast<int>(g.list.size()),
+                 static_cast<int>(w.links.size()), g.x, g.y, g.z, w.G,
                  w.eps2, g.ax, g.ay, g.az, g.phi, g.length);
 }
 using GroupField = void (*)(const Walk&, Lanes, Group&);
