@@ -54,6 +54,15 @@ def expected_tex(row):
     return claim_tex(row, "none")
 
 
+def claim_window_tex(row):
+    """The claim and, for a two-sided one, its window: "$1 \\pm 0.3$ $[0.7, 1.3]$"; a one-sided
+    claim is its window ("$\\geq 0.74$")."""
+    w = list(row.get("window") or []) + [None, None]
+    if not num(row.get("expected")) or one_sided(row) or not (num(w[0]) and num(w[1])):
+        return expected_tex(row)
+    return f"{expected_tex(row)} \\mbox{{$[{w[0]:.3g}, {w[1]:.3g}]$}}"
+
+
 # Each outcome in its own colour, as in the HTML report (xcolor).
 OUTCOME_TEX = {"verified": r"\textcolor[rgb]{0,0.4,0}{verified}", "known failure": r"\textcolor[rgb]{0.5,0.15,0.6}{known failure}",
                "provisional": r"\textcolor[rgb]{0.63,0.31,0}{\emph{provisional}}",
@@ -147,8 +156,8 @@ def provenance_text(sweeps, tier):
 def comparison_tables(case, ss, key):
     """Per group of variants compared in the parameter key (report_compare.py): what the others
     change against the first and whether the group is like for like, then a table: per error and
-    member the error at the fixed n, its wall time, the error at the fixed cost, the observed order
-    and the outcome."""
+    member the error at the fixed n, its wall time, the error at the fixed cost, the observed order,
+    the claim with its window (as the HTML report's table) and the outcome."""
     t = []
     for g in report_compare.groups(ss, key):
         rows = []
@@ -158,17 +167,19 @@ def comparison_tables(case, ss, key):
             for j, r in enumerate(comp):
                 head = (ragged(f"{tex(err)} ($n={fmt(n_fixed, 'g', '--')}$, {fmt(t_fixed, '.3g', '--')} s)") if j == 0 else "")
                 rows.append(f"{head} & {ragged(prose(r['value']))} & {ragged(prose(r['variant']))} & {sci(r['at_n'])} & "
-                            f"{fmt(r['wall_at_n'], '.3g', '--')} & {sci(r['at_cost'])} & {order_tex(r)} & {outcome_tex(r)} \\tabularnewline")
+                            f"{fmt(r['wall_at_n'], '.3g', '--')} & {sci(r['at_cost'])} & {order_tex(r)} & {ragged(claim_window_tex(r))} & "
+                            f"{outcome_tex(r)} \\tabularnewline")
             rows[-1] += r" \midrule" if err != errs[-1] else ""
         t.append(f"{prose(case)}, {prose(key)}s compared ({prose(report_compare.title(g))}): {prose(report_compare.unlike_text(g))} "
                  + " ".join(report_compare.effects(g, prose, error_name)))
-        t += long_table(f"error (fixed $n$, fixed cost) & {prose(key)} & variant & at fixed $n$ & wall s & at fixed cost & observed & outcome",
-                        r"p{2.4cm} p{1.9cm} p{2.0cm} l l l l l", rows,
+        t += long_table(f"error (fixed $n$, fixed cost) & {prose(key)} & variant & at fixed $n$ & wall s & at fixed cost & observed & "
+                        "claim [window] & outcome", r"p{2.2cm} p{1.6cm} p{1.8cm} l l l l p{1.7cm} l", rows,
                         f"{prose(case)} ({prose(report_compare.title(g))}): the {prose(key)}s compared"
                         + (" (not like for like: see the text)" if g.nearest or any(g.differs) else "")
                         + f". Fixed $n$: the finest level every {prose(key)} ran; fixed cost: each {prose(key)}'s error "
                         "interpolated (log error linear in log wall time) at the largest wall time every sweep reached; "
-                        f"observed order of each sweep.", f"tab:supp-{key}s-{slug(case)}-{slug(g.label)}")
+                        "observed order of each sweep; the claim with the window its order must lie in.",
+                        f"tab:supp-{key}s-{slug(case)}-{slug(g.label)}")
     lone = report_compare.alone_text(ss, key)
     if lone:
         t.append(prose(lone))
