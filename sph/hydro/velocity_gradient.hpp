@@ -35,6 +35,9 @@ void velocity_divergence_curl(const Particles<D>& p, const NeighbourList& nl, co
   const double* m = p.m.data();
   constexpr int pairs_ab = D * (D - 1) / 2;  // the entries above the diagonal, a < b (at most 3)
   static_assert(D <= 3);
+  // (a, b) of those entries, in the order of a then b: one flat loop over them, which GCC unrolls
+  // at -O2; a nested loop over a and b leaves a branch in the 2D pair loop, which then stays scalar.
+  static constexpr int above_diagonal[3][2] = {{0, 1}, {0, 2}, {1, 2}};
   for_each_particle<D>(n, nl, [&](std::size_t i) {
     constexpr int batch = 64;
     // Of the batch's pairs: the trace of m_j (v_j - v_i) (x) grad_i W_ij(h_i), and its entries
@@ -65,11 +68,11 @@ void velocity_divergence_curl(const Particles<D>& p, const NeighbourList& nl, co
 #pragma GCC unroll 3
         for (int d = 0; d < D; ++d) tr += dv[d] * (g * rij[d]);
         trace_share[t] = tr;
-        int k = 0;
 #pragma GCC unroll 3
-        for (int a = 0; a < D; ++a)
-#pragma GCC unroll 3
-          for (int b = a + 1; b < D; ++b) anti_share[k++][t] = dv[a] * (g * rij[b]) - dv[b] * (g * rij[a]);
+        for (int k = 0; k < pairs_ab; ++k) {
+          const int a = above_diagonal[k][0], b = above_diagonal[k][1];
+          anti_share[k][t] = dv[a] * (g * rij[b]) - dv[b] * (g * rij[a]);
+        }
       }
       for (int t = 0; t < nb; ++t) {
         trace += trace_share[t];
