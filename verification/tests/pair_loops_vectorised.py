@@ -5,7 +5,7 @@ loop that it does not unroll leaves a copy scalar without any result changing, a
 profile would show it. This reads the binary's disassembly (objdump) and requires every AVX2 copy
 of a pair loop (particles_in_avx2, listed_in_avx2, batch_geometry_avx2) to hold packed-double
 arithmetic on 256-bit registers and every AVX-512 copy on 512-bit registers, except the loops
-that are scalar on purpose (SCALAR below: each with the reason). A loop that calls pow (the
+listed in SCALAR below, each with why it is scalar. A loop that calls pow (the
 general lambda forms of (25), rho^lambda per pair) cannot be vectorised by GCC without the vector
 math library and is not held to it.
 
@@ -16,11 +16,12 @@ import re
 import subprocess
 import sys
 
-# Scalar on purpose: name fragment -> why.
+# Loops known to be scalar: name fragment -> why.
 SCALAR = {
     "sph::sum_over_pairs<": "the kernel interpolants and operators (pairs_of): a branch per pair on |r_ij| < h_ij after "
                             "the vectorised pair geometry",
-    "sph::TwoPassConduction<": "the two-pass conduction's pair term reads grad T as Vec<D> records",
+    "sph::TwoPassConduction<": "not vectorised: the two-pass conduction's pair term reads grad T as Vec<D> records "
+                               "(the heat and laplacian cases' flux forms)",
 }
 COPIES = {"avx2": ("%ymm", re.compile(r"^void sph::(?:particles_in|listed_in|detail::batch_geometry)_avx2<")),
           "avx512": ("%zmm", re.compile(r"^void sph::(?:particles_in|listed_in|detail::batch_geometry)_avx512<"))}
@@ -66,7 +67,7 @@ def main():
         print("pair_loops_vectorised: skipped: no AVX2 copies of the pair loops in this build (not x86-64 GCC)")
         sys.exit(77)
     print(f"pair_loops_vectorised: {seen['avx2']} AVX2 and {seen['avx512']} AVX-512 copies of pair loops, "
-          f"{exempt} scalar on purpose, {len(scalar)} scalar where they should be vector code")
+          f"{exempt} known to be scalar (listed with their reasons), {len(scalar)} scalar where they should be vector code")
     for s in scalar:
         print("  scalar:", s)
     sys.exit(1 if scalar else 0)
