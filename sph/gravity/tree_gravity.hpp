@@ -109,8 +109,9 @@ inline void add_source(const Source& src, Lanes bits, int first, const double* r
 // set; each lane's terms are added in list order. A source's fields are read once for the
 // lanes, block lanes at a time; a block none of whose lanes takes the source is skipped (it
 // would add +0.0 to sums that start at +0.0 and never reach -0.0: the same sums). Fewer than half
-// of the lanes take a given source, and about a third of the blocks none, yet this is faster than
-// per-target lists, whose sources would have to be gathered.
+// of the lanes take a given source, and about a third of the blocks none (an Evrard sphere of 7208
+// particles at theta 0.5), yet this is faster than per-target lists, whose sources would have to be
+// gathered.
 template <Multipole M>
 inline void sum_sources(const std::vector<Source>& s, const int* list, const Lanes* take, int n, int nodes,
                         const double* r0, const double* r1, const double* r2, double G, double eps2, double* ax,
@@ -257,8 +258,7 @@ template <Multipole M, Opening O>
 void group_field(const Walk& w, Lanes in, Group& g) {
   walk<O>(w, in, g);
   sum_sources<M>(w.sources, g.list.data(), g.take.data(), static_cast<int>(g.list.size()),
-                 static_cast<int>(w.links.size()), g.x, g.y, g.z, w.G,
-                 w.eps2, g.ax, g.ay, g.az, g.phi, g.length);
+                 static_cast<int>(w.links.size()), g.x, g.y, g.z, w.G, w.eps2, g.ax, g.ay, g.az, g.phi, g.length);
 }
 using GroupField = void (*)(const Walk&, Lanes, Group&);
 
