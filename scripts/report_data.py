@@ -77,12 +77,17 @@ def order_text(row):
     return f"{text} ({local})" if local else text
 
 
+def window_edges(row):
+    """The lower and upper edge of a row's window (None where it has none)."""
+    lo, hi = (list(row.get("window") or []) + [None, None])[:2]
+    return lo, hi
+
+
 def expected_text(row):
     """The claim and its window: "1 ± 0.25 [0.75, 1.25]", or "at least 0.74"."""
     if not num(row.get("expected")):
         return "none"
-    window = list(row.get("window") or []) + [None, None]
-    lo, hi = window[0], window[1]
+    lo, hi = window_edges(row)
     if num(lo) and not num(hi):
         return f"at least {lo:.3g}"
     text = f"{row['expected']:.3g} ± {row.get('band', 0):.3g}"
@@ -91,8 +96,8 @@ def expected_text(row):
 
 def one_sided(row):
     """A one-sided claim ("at least p"): its window has a lower edge and no upper one."""
-    window = list(row.get("window") or []) + [None, None]
-    return num(window[0]) and not num(window[1])
+    lo, hi = window_edges(row)
+    return num(lo) and not num(hi)
 
 
 def claim_tex(row, missing):
@@ -103,6 +108,16 @@ def claim_tex(row, missing):
     if one_sided(row):
         return f"$\\geq {row['window'][0]:.3g}$"
     return f"${row['expected']:.3g} \\pm {row.get('band', 0):.3g}$"
+
+
+def claim_window_tex(row, missing):
+    """expected_text in LaTeX: the claim and, for a two-sided one, its window ("$1 \\pm 0.3$
+    [0.7, 1.3]"); a one-sided claim is its window ("$\\geq 0.74$"); `missing` where no order is
+    claimed."""
+    lo, hi = window_edges(row)
+    if not num(row.get("expected")) or one_sided(row) or not (num(lo) and num(hi)):
+        return claim_tex(row, missing)
+    return f"{claim_tex(row, missing)} \\mbox{{$[{lo:.3g}, {hi:.3g}]$}}"
 
 
 def local_text(row):

@@ -19,7 +19,7 @@ from pathlib import Path
 import report_bib
 import report_compare
 import report_paper
-from report_data import (claim_notes, claim_tex, f2, file_of, fmt, is_dirty, num, one_sided, provenances, row_note,
+from report_data import (claim_notes, claim_tex, claim_window_tex, f2, file_of, fmt, is_dirty, num, one_sided, provenances, row_note,
                          slug, sweep_wide_failures, threads_text)
 from report_math import error_name, latex, prose
 
@@ -52,15 +52,6 @@ def order_tex(row):
 
 def expected_tex(row):
     return claim_tex(row, "none")
-
-
-def claim_window_tex(row):
-    """The claim and, for a two-sided one, its window: "$1 \\pm 0.3$ $[0.7, 1.3]$"; a one-sided
-    claim is its window ("$\\geq 0.74$")."""
-    w = list(row.get("window") or []) + [None, None]
-    if not num(row.get("expected")) or one_sided(row) or not (num(w[0]) and num(w[1])):
-        return expected_tex(row)
-    return f"{expected_tex(row)} \\mbox{{$[{w[0]:.3g}, {w[1]:.3g}]$}}"
 
 
 # Each outcome in its own colour, as in the HTML report (xcolor).
@@ -167,7 +158,7 @@ def comparison_tables(case, ss, key):
             for j, r in enumerate(comp):
                 head = (ragged(f"{tex(err)} ($n={fmt(n_fixed, 'g', '--')}$, {fmt(t_fixed, '.3g', '--')} s)") if j == 0 else "")
                 rows.append(f"{head} & {ragged(prose(r['value']))} & {ragged(prose(r['variant']))} & {sci(r['at_n'])} & "
-                            f"{fmt(r['wall_at_n'], '.3g', '--')} & {sci(r['at_cost'])} & {order_tex(r)} & {ragged(claim_window_tex(r))} & "
+                            f"{fmt(r['wall_at_n'], '.3g', '--')} & {sci(r['at_cost'])} & {order_tex(r)} & {ragged(claim_window_tex(r, 'none'))} & "
                             f"{outcome_tex(r)} \\tabularnewline")
             rows[-1] += r" \midrule" if err != errs[-1] else ""
         t.append(f"{prose(case)}, {prose(key)}s compared ({prose(report_compare.title(g))}): {prose(report_compare.unlike_text(g))} "

@@ -23,8 +23,8 @@ SCALAR = {
     "sph::TwoPassConduction<": "not vectorised: the two-pass conduction's pair term reads grad T as Vec<D> records "
                                "(the heat and laplacian cases' flux forms)",
 }
-COPIES = {"avx2": ("%ymm", re.compile(r"^void sph::(?:particles_in|listed_in|detail::batch_geometry)_avx2<")),
-          "avx512": ("%zmm", re.compile(r"^void sph::(?:particles_in|listed_in|detail::batch_geometry)_avx512<"))}
+COPY = re.compile(r"^void sph::(?:particles_in|listed_in|detail::batch_geometry)_(avx2|avx512)<")
+REGISTER = {"avx2": "%ymm", "avx512": "%zmm"}  # the vector registers each copy's arithmetic must use
 PACKED_DOUBLE = re.compile(r"^v\w+pd$")
 
 
@@ -51,18 +51,19 @@ def main():
     if len(sys.argv) != 2:
         print(__doc__)
         sys.exit(2)
-    seen = {k: 0 for k in COPIES}
+    seen = {k: 0 for k in REGISTER}
     scalar, exempt = [], 0
     for name, body in functions(sys.argv[1]):
-        for copy, (register, pattern) in COPIES.items():
-            if not pattern.match(name):
-                continue
-            seen[copy] += 1
-            if any(k in name for k in SCALAR) or any(i.startswith("call") and "<pow@plt>" in i for i in body):
-                exempt += 1
-                continue
-            if not any(register in i and PACKED_DOUBLE.match(i.split()[0]) for i in body if i):
-                scalar.append(f"{copy}: {name[:400]}")
+        m = COPY.match(name)
+        if not m:
+            continue
+        copy = m.group(1)
+        seen[copy] += 1
+        if any(k in name for k in SCALAR) or any(i.startswith("call") and "<pow@plt>" in i for i in body):
+            exempt += 1
+            continue
+        if not any(REGISTER[copy] in i and PACKED_DOUBLE.match(i.split()[0]) for i in body if i):
+            scalar.append(f"{copy}: {name[:400]}")
     if seen["avx2"] == 0:
         print("pair_loops_vectorised: skipped: no AVX2 copies of the pair loops in this build (not x86-64 GCC)")
         sys.exit(77)
