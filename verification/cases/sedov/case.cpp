@@ -150,7 +150,8 @@ std::vector<Check> gates(const Sweep& s) {
 // share of the energy stays below the exact 0.283 without rising, the front trails the
 // kernel-smoothed exact front further at each level and L1_rho does not fall; from n = 48 (3.6
 // spacings) the share rises and both errors fall. The same levels with the heat on R/2 (2.4-4.8
-// spacings) converge (docs/cases/sedov.md). A smaller Courant number (0.15) changes nothing (the
+// spacings) converge (docs/cases/sedov.md); beyond them the front's offset keeps falling and L1_rho
+// levels off, as 2D's does from n = 128 (n = 40..64 in docs/cases/sedov.md). A smaller Courant number (0.15) changes nothing (the
 // time step is not the cause), and the wider support hfact 4 does not converge either. So 3D at
 // R/4 is a known failure, with the deposit on R/2 as the variant that
 // converges; the deposit's finite size is remembered at t_end (the error's limit is the point
@@ -174,7 +175,9 @@ OrderClaims sedov_orders(const Params& p) {
                                     "beyond the kernel's and the blast's memory, first order in h ~ 1/n (faster "
                                     "while the blast's memory fades)"};
   const OrderClaim l1{1.0, 0.75, "a shock smeared over a few h: L1 first order in h at fixed hfact; "
-                                 "pre-asymptotic on the affordable levels (local orders rising towards 1)"};
+                                 "its local orders stay below 1 and do not rise on finer levels (2D at the lower "
+                                 "gamma; 3D with the heat on R/2, where they fall): a part of the error does not "
+                                 "fall with h (docs/cases/sedov.md)"};
   const OrderClaim l1_2d{1.0, 0.3, "a shock smeared over a few h: L1 first order in h at fixed hfact, from "
                                    "n = 48, where the blast's deposit spans {extra.blast_spacings} spacings at "
                                    "{levels}"};
