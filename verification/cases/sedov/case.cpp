@@ -150,13 +150,13 @@ std::vector<Check> gates(const Sweep& s) {
 // share of the energy stays below the exact 0.283 without rising, the front trails the
 // kernel-smoothed exact front further at each level and L1_rho does not fall; from n = 48 (3.6
 // spacings) the share rises and both errors fall. The same levels with the heat on R/2 (2.4-4.8
-// spacings) converge (docs/cases/sedov.md); beyond them the front's offset keeps falling and L1_rho
-// levels off, as 2D's does from n = 128 (n = 40..64 in docs/cases/sedov.md). A smaller Courant number (0.15) changes nothing (the
-// time step is not the cause), and the wider support hfact 4 does not converge either. So 3D at
-// R/4 is a known failure, with the deposit on R/2 as the variant that
-// converges; the deposit's finite size is remembered at t_end (the error's limit is the point
-// blast's only as the deposit shrinks, which at fixed r_blast it does not: on these levels the
-// shock's smearing is larger than that memory).
+// spacings) converge (docs/cases/sedov.md); beyond them the front's offset keeps falling and
+// L1_rho levels off, as 2D's does from n = 128 (n = 40..64 in docs/cases/sedov.md). A smaller
+// Courant number (0.15) changes nothing (the time step is not the cause), and the wider support
+// hfact 4 does not converge either. So 3D at R/4 is a known failure, with the deposit on R/2 as
+// the variant that converges; the deposit's finite size is remembered at t_end (the error's limit
+// is the point blast's only as the deposit shrinks, which at fixed r_blast it does not: on these
+// levels the shock's smearing is larger than that memory).
 //
 // scheme=gradh_switches (2D, gamma 5/3; grad-h, the Cullen & Dehnen switch, conduction) on n = 48,
 // 64, 96, 128: L1_rho 0.2773, 0.2141, 0.1500, 0.1170, local orders 0.90, 0.88, 0.86, fit 0.88 +-
