@@ -36,9 +36,10 @@ struct Mesh {
   }
 
   // d = d/dt of (r, v, e): the semi-discrete system of the header. d and P are the caller's, sized
-  // by sized(): a step evaluates this four times, and fresh arrays each time cost as much as the
-  // arithmetic. With step_of_zone, also each zone's time step C dr_k / (c_k + 2 (c1 c_k + c2 |dv_k|))
-  // (the step's is their least, time_step), from the same evaluation of the zone.
+  // by sized(): a step evaluates this four times, and fresh arrays for each would take a large
+  // share of the solver's time. With step_of_zone, also each zone's time step
+  // C dr_k / (c_k + 2 (c1 c_k + c2 |dv_k|)) (the step's is their least, time_step), from the same
+  // evaluation of the zone.
   void rate(const State& s, State& d, std::vector<double>& P, double* step_of_zone = nullptr,
             double courant = 0.0) const {
     d.r[0] = d.v[0] = 0.0;  // the centre's node stays put
@@ -61,8 +62,8 @@ struct Mesh {
   }
   State sized() const { return {std::vector<double>(n + 1), std::vector<double>(n + 1), std::vector<double>(n)}; }
 
-  // The least of the zones' time steps, in four running minima (the least does not depend on the
-  // order, and one chain of dependent minima would take as long as the zones' arithmetic).
+  // The least of the zones' time steps, in four running minima side by side (the least does not
+  // depend on the order; one chain would wait on each minimum before the next).
   static double time_step(const std::vector<double>& step_of_zone) {
     std::array<double, 4> least;
     least.fill(std::numeric_limits<double>::infinity());
