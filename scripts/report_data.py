@@ -115,7 +115,7 @@ def claim_window_tex(row, missing):
     [0.7, 1.3]"); a one-sided claim is its window ("$\\geq 0.74$"); `missing` where no order is
     claimed."""
     lo, hi = window_edges(row)
-    if not num(row.get("expected")) or one_sided(row) or not (num(lo) and num(hi)):
+    if not num(row.get("expected")) or not (num(lo) and num(hi)):  # no claim, or a one-sided one
         return claim_tex(row, missing)
     return f"{claim_tex(row, missing)} \\mbox{{$[{lo:.3g}, {hi:.3g}]$}}"
 

@@ -19,8 +19,8 @@ from pathlib import Path
 import report_bib
 import report_compare
 import report_paper
-from report_data import (claim_notes, claim_tex, claim_window_tex, f2, file_of, fmt, is_dirty, num, one_sided, provenances, row_note,
-                         slug, sweep_wide_failures, threads_text)
+from report_data import (claim_notes, claim_tex, claim_window_tex, f2, file_of, fmt, is_dirty, num, one_sided,
+                         provenances, row_note, slug, sweep_wide_failures, threads_text)
 from report_math import error_name, latex, prose
 
 FAIL = r"\textbf{FAIL}"
