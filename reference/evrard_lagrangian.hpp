@@ -1,25 +1,15 @@
 #pragma once
 #include <vector>
 
+#include "reference/lagrangian_1d.hpp"
+
 namespace reference {
 
 // Evrard (1988) collapse in spherical symmetry: a 1D Lagrangian hydrodynamics solver with
-// self-gravity from the enclosed mass, the independent reference for the 3D SPH case.
-// Units G = M = R = 1. Initial state: rho(r) = 1 / (2 pi r) (M(r) = r^2) at rest, u = u0,
-// ideal gas with gamma.
-//
-// Discretisation (von Neumann-Richtmyer staggered mesh): N zones between nodes r_0 = 0 < r_1 <
-// ... < r_N, zone k of mass dm_k holds rho, e (specific internal energy), p = (gamma - 1) rho e
-// and the artificial viscosity q_k = rho_k (c2 dv^2 + c1 c_k |dv|) for dv = v_{k+1} - v_k < 0;
-// node i carries mass m_i = (dm_{i-1} + dm_i) / 2 and velocity v_i. The semi-discrete system
-//   m_i dv_i/dt = 4 pi r_i^2 (P_{i-1} - P_i) - G m_i M_i / r_i^2,   P = p + q, P_N = 0,
-//   dm_k de_k/dt = -P_k dV_k/dt,   dV_k/dt = 4 pi (r_{k+1}^2 v_{k+1} - r_k^2 v_k),
-// with M_i = sum_{j<i} m_j + m_i / 2 (node shells as thin shells, the node at the centre a point
-// mass) conserves E = sum_i m_i v_i^2 / 2 + sum_k dm_k e_k + W exactly, where
-//   W = -G sum_{i>=1} m_i M_i / r_i
-// is the potential energy of the node shells (the force is -dW/dr_i). Time integration: classical
-// RK4 with dt = C min_k dr_k / (c_k + 2 (c1 c_k + c2 |dv_k|)), landing on the output times.
-// Zones have equal initial width dr = R / N.
+// self-gravity from the enclosed mass (reference/lagrangian_1d.hpp: its mesh, conserved energy
+// and time integration), the independent reference for the 3D SPH case. Units G = M = R = 1.
+// Initial state: rho(r) = 1 / (2 pi r) (M(r) = r^2) at rest, u = u0, ideal gas with gamma; vacuum
+// outside. Zones have equal initial width dr = R / N; the RK4 steps land on the output times.
 //
 // Convergence (measured; L1 over t of the curve differences relative to |W(0)| = 2/3, zones
 // N - 2N): kinetic 0.022, 0.013, 0.0073; thermal 0.039, 0.023, 0.013; potential 0.061, 0.036,
@@ -41,11 +31,8 @@ struct EvrardOptions {
   long max_steps = 10000000;
 };
 
-// The state at t_end as radial profiles: node radii and velocities, zone-centre radii (the mean of
-// the zone's two nodes), densities and specific internal energies.
-struct EvrardProfile {
-  std::vector<double> r_node, v, r_zone, rho, e;
-};
+// The state at t_end as radial profiles.
+using EvrardProfile = RadialProfile;
 
 struct EvrardSolution {
   std::vector<double> t, kinetic, thermal, potential;  // E_kin, E_th, W at the output times

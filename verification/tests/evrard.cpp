@@ -1,5 +1,6 @@
 // Evrard collapse: the self-gravity scene term against the direct sum, the 1D Lagrangian
-// reference (energy conservation, initial W, convergence in zones) and the case's gate.
+// reference (energy conservation, initial W, convergence in zones, the published profile at
+// t = 0.8) and the case's gate.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -66,6 +67,32 @@ TEST_CASE("evrard reference: energy conservation and initial potential energy", 
   const auto pk = std::max_element(s.thermal.begin(), s.thermal.end()) - s.thermal.begin();
   CHECK(s.t[pk] > 0.9);
   CHECK(s.potential.back() > *std::min_element(s.potential.begin(), s.potential.end()) + 0.5);
+}
+
+TEST_CASE("evrard reference: the bounce shock at t = 0.8 where a published 1D PPM profile puts it", "[evrard][reference]") {
+  // Independent numbers (shared spec, reference-values.md): a high-resolution 1D PPM profile at
+  // t = 0.8 puts the bounce shock at r = 0.14 with the infall speed peaking at 1.60 there, and
+  // E0 = -0.617. The reference at its default 800 zones, measured: shock (the radius where v
+  // rises to half its extreme, inward of it) 0.1382, infall peak 1.5913; at 400, 1600, 3200
+  // zones 0.1402, 0.1371, 0.1366 and 1.5674, 1.6082, 1.6164 (its own error at 800: 0.0016 in r and
+  // 0.025 in speed against 3200). Bounds: the published digits' rounding (0.005) plus 1.5 times
+  // that error.
+  reference::EvrardOptions o;
+  o.t_end = 0.8;
+  const auto s = reference::evrard_lagrangian(o);
+  const auto& p = s.at_end;
+  const std::size_t k = std::min_element(p.v.begin(), p.v.end()) - p.v.begin();
+  const double v_peak = -p.v[k];
+  std::size_t i = k;
+  while (i > 0 && p.v[i] < -0.5 * v_peak) --i;
+  REQUIRE(i + 1 <= k);
+  const double f = (-0.5 * v_peak - p.v[i]) / (p.v[i + 1] - p.v[i]);
+  const double r_shock = p.r_node[i] + f * (p.r_node[i + 1] - p.r_node[i]);
+  INFO("shock at r = " << r_shock << ", infall peak " << v_peak << " at r = " << p.r_node[k]);
+  CHECK(std::abs(r_shock - 0.14) < 0.005 + 1.5 * 0.0016);
+  CHECK(std::abs(v_peak - 1.60) < 0.005 + 1.5 * 0.025);
+  CHECK(p.r_node[k] > r_shock);  // the peak lies ahead of (outside) the shock
+  CHECK(std::abs(s.total(0) + 0.617) < 0.0005);
 }
 
 TEST_CASE("evrard reference: the energy curves converge in the number of zones", "[evrard][reference]") {
