@@ -60,7 +60,7 @@ const Run& blast(int d, double r_b_over_R, int zones) {
 }  // namespace
 
 // One test case (ctest runs each in a process of its own), so that its sections share the runs.
-TEST_CASE("blast reference: against the similarity solution; the deposit's memory; energy", "[reference][sedov]") {
+TEST_CASE("blast reference: against the similarity solution, the deposit's memory and energy", "[reference][sedov]") {
   SECTION("a small deposit converges to the similarity solution at first order") {
     // Deposit on R/50. Measured L1: 2D 0.02611, 0.01326 at 400, 800 zones (ratio 1.97); 3D
     // 0.03255, 0.01639 (1.99): first order at the shock. Bounds: ratio above 1.6 (order 0.68),
