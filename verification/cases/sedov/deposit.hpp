@@ -39,14 +39,14 @@ reference::RadialProfile deposit_blast(double gamma, double E, double rho0, doub
   return reference::blast_lagrangian(o);
 }
 
-// Sum over the particles with r < 1.2 R of (m/rho) |rho - rho_ref(r)|, over vol_d(1.2 R) rho0.
+// Sum over the particles with r < 1.2 R of their volume m/rho times |a - b|, over vol_d(1.2 R) rho0.
 template <int D>
-double ball_l1(const std::vector<double>& rad, const std::vector<double>& m, const std::vector<double>& rho,
-               const std::vector<double>& rho_ref, double R, double rho0) {
+double ball_l1(const std::vector<double>& rad, const std::vector<double>& volume, const std::vector<double>& a,
+               const std::vector<double>& b, double R, double rho0) {
   const double ball = (D == 2 ? M_PI : 4.0 / 3.0 * M_PI) * std::pow(1.2 * R, D);
   double l1 = 0.0;
   for (std::size_t i = 0; i < rad.size(); ++i)
-    if (rad[i] < 1.2 * R) l1 += m[i] / rho[i] * std::abs(rho[i] - rho_ref[i]);
+    if (rad[i] < 1.2 * R) l1 += volume[i] * std::abs(a[i] - b[i]);
   return l1 / ball / rho0;
 }
 
@@ -60,14 +60,16 @@ void measure_deposit(Result& r, const std::vector<sph::Vec<D>>& x, const std::ve
   const double R = exact.shock_radius(E, rho0, t);
   const reference::RadialProfile dep = deposit_blast<D>(gamma, E, rho0, u_ambient, r_b, t, R, deposit_zones),
                                  half = deposit_blast<D>(gamma, E, rho0, u_ambient, r_b, t, R, deposit_zones / 2);
-  std::vector<double> rad(x.size()), at_dep(x.size()), at_half(x.size());
+  std::vector<double> rad(x.size()), volume(x.size()), at_dep(x.size()), at_half(x.size());
   for (std::size_t i = 0; i < x.size(); ++i) {
     rad[i] = x[i].norm();
+    volume[i] = m[i] / rho[i];
     at_dep[i] = interpolate_linear(dep.r_zone, dep.rho, rad[i]);
     at_half[i] = interpolate_linear(half.r_zone, half.rho, rad[i]);
   }
-  r.errors["L1_rho_deposit"] = ball_l1<D>(rad, m, rho, at_dep, R, rho0);
-  r.extra["reference_L1_rho_half_zones"] = ball_l1<D>(rad, m, at_half, at_dep, R, rho0);
+  // The reference's own error, the same norm with the same particle volumes.
+  r.errors["L1_rho_deposit"] = ball_l1<D>(rad, volume, rho, at_dep, R, rho0);
+  r.extra["reference_L1_rho_half_zones"] = ball_l1<D>(rad, volume, at_half, at_dep, R, rho0);
   r.extra["deposit_reference_zones"] = deposit_zones;
   // The deposit's memory: the same L1 between the deposit's solution and the point blast's,
   // summed over the reference's zones inside the ball.
