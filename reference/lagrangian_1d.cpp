@@ -75,7 +75,7 @@ struct Mesh {
 // d = d/dt of (r, v, e): the semi-discrete system of the header, with P_k (pressure + viscosity)
 // into P; with_step: also each zone's time step C dr_k / (c_k + 2 (c1 c_k + c2 |dv_k|)) (the
 // step's is their least) from the same evaluation of the zone. Compiled for each dimension,
-// gravity and outer boundary, so that the zone and node loops test none of them and vectorise.
+// gravity and outer boundary, so that the zone and node loops test none of them.
 template <int D, bool gravity, bool wall, bool with_step>
 void rates(const Mesh& m, const LagrangianState& s, LagrangianState& d, double* P, double* step_of_zone) {
   const int n = m.n;
