@@ -270,7 +270,8 @@ def section(sweeps, figdir, copy, provenance_sentence):
          r"Each case compares the SPH result with a reference independent of the code: an exact solution (Sod's "
          r"shock tube, \citealt{toro2009}; the Sedov--Taylor blast, \citealt{sedov1959}; Noh's implosion, "
          r"\citealt{noh1987}; the Gresho--Chan vortex, \citealt{gresho1990}), a linear theory (sound waves; the Kelvin--Helmholtz growth of \citealt{mcnally2012}), "
-         r"an independent solver (a 1D Lagrangian code for the collapse of \citealt{evrard1988}; SUNDIALS for heat "
+         r"an independent solver (a 1D Lagrangian code for the collapse of \citealt{evrard1988} and for the Sedov blast "
+         r"from the run's own finite deposit; SUNDIALS for heat "
          r"conduction), a direct summation (gravity) or a quadrature (kernels, \citealt{dehnen2012}). The equations are "
          r"those of \citet{chapter}.",
          "",

@@ -25,8 +25,8 @@ inline const char* const deposit_error_def =
 
 // The reference's zones over [0, 4/3 R] (a wall beyond the ball of the errors, 1.2 R, which the
 // shock does not reach by t): R / 1200 wide. With half as many, the L1 between the two at the
-// particles' radii (extra.reference_L1_rho_half_zones) is a few per cent of the finest level's
-// L1_rho_deposit (docs/cases/sedov.md).
+// particles' radii (extra.reference_L1_rho_half_zones) is 0.0025 to 0.009, 2 to 7 % of the full
+// tier's finest L1_rho_deposit (docs/cases/sedov.md).
 constexpr int deposit_zones = 1600;
 
 template <int D>
