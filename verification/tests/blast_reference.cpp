@@ -107,9 +107,11 @@ TEST_CASE("blast reference: bad input is refused", "[reference][sedov]") {
   CHECK_THROWS_AS(reference::blast_lagrangian(o), std::invalid_argument);  // nowhere positive
   o.deposit = [](double r) { return r < 0.1 ? 1.0 : 0.0; };
   CHECK_NOTHROW(reference::blast_lagrangian(o));
-  for (auto bad : {+[](reference::BlastOptions& b) { b.dim = 1; }, +[](reference::BlastOptions& b) { b.gamma = 1.0; },
-                   +[](reference::BlastOptions& b) { b.u_ambient = 0.0; }, +[](reference::BlastOptions& b) { b.zones = 1; },
-                   +[](reference::BlastOptions& b) { b.t_end = -1.0; }}) {
+  using Change = void (*)(reference::BlastOptions&);
+  for (Change bad : {+[](reference::BlastOptions& b) { b.dim = 1; }, +[](reference::BlastOptions& b) { b.gamma = 1.0; },
+                     +[](reference::BlastOptions& b) { b.u_ambient = 0.0; },
+                     +[](reference::BlastOptions& b) { b.zones = 1; },
+                     +[](reference::BlastOptions& b) { b.t_end = -1.0; }}) {
     reference::BlastOptions b = o;
     bad(b);
     CHECK_THROWS_AS(reference::blast_lagrangian(b), std::invalid_argument);

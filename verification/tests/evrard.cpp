@@ -69,7 +69,8 @@ TEST_CASE("evrard reference: energy conservation and initial potential energy", 
   CHECK(s.potential.back() > *std::min_element(s.potential.begin(), s.potential.end()) + 0.5);
 }
 
-TEST_CASE("evrard reference: the bounce shock at t = 0.8 where a published 1D PPM profile puts it", "[evrard][reference]") {
+TEST_CASE("evrard reference: the bounce shock at t = 0.8 where a published 1D PPM profile puts it",
+          "[evrard][reference]") {
   // Independent numbers (shared spec, reference-values.md): a high-resolution 1D PPM profile at
   // t = 0.8 puts the bounce shock at r = 0.14 with the infall speed peaking at 1.60 there, and
   // E0 = -0.617. The reference at its default 800 zones, measured: shock (the radius where v

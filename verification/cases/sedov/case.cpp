@@ -129,7 +129,8 @@ std::vector<Check> gates(const Sweep& s) {
   });
   // The finest level of the sweep.
   const Params p = find_case(s.case_name).parse(s.settings);
-  for (const auto& [error, m] : {std::pair{"L1_rho", l1_measured(p)}, std::pair{"L1_rho_deposit", l1_deposit_measured(p)}})
+  for (const auto& [error, m] :
+       {std::pair{"L1_rho", l1_measured(p)}, std::pair{"L1_rho_deposit", l1_deposit_measured(p)}})
     if (!s.runs.empty() && s.runs.back().errors.count(error))
       c.push_back({"n" + std::to_string(s.levels.back()) + "_" + error, s.runs.back().errors.at(error), 0.0, 1.2 * m,
                    "measured " + std::to_string(m) + " at the finest quick level + 20 %", Check::Kind::drift, error});
@@ -140,8 +141,8 @@ std::vector<Check> gates(const Sweep& s) {
 // deposit shrinks: at a fixed r_blast the runs tend to the blast they pose, whose 1D solution
 // (sedov/deposit.hpp) differs from the similarity solution by the deposit's memory, in L1_rho's
 // norm 0.0365, 0.0376, 0.0387 on zones R/600, R/1200, R/2400 wide (2D, R/4), 0.088 (gamma 1.4),
-// 0.065 (3D, R/2). So L1_rho claims no order, and L1_rho_deposit, the same norm against that solution,
-// carries the claim: first order in h ~ 1/n, the shock smeared over a few h. 2D on 48..256
+// 0.065 (3D, R/2). So L1_rho claims no order, and L1_rho_deposit, the same norm against that
+// solution, carries the claim: first order in h ~ 1/n, the shock smeared over a few h. 2D on 48..256
 // (docs/cases/sedov.md): its local orders 0.93, 0.90, 0.90, 0.58 (L1_rho's 0.96, 0.78, 0.95,
 // 0.45), at gamma 1.4 0.59, 0.94, 0.65, 0.85 (L1_rho's 0.60, 0.67, 0.49, 0.62: the memory is
 // larger behind the 6-fold compressed spike); the particles inside 0.8 R follow the deposit's

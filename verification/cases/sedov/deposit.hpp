@@ -39,7 +39,8 @@ reference::RadialProfile deposit_blast(double gamma, double E, double rho0, doub
   return reference::blast_lagrangian(o);
 }
 
-// Sum over the particles with r < 1.2 R of their volume m/rho times |a - b|, over vol_d(1.2 R) rho0.
+// Sum over the particles with r < 1.2 R of their volumes m/rho times |a - b|, over vol_d(1.2 R)
+// rho0.
 template <int D>
 double ball_l1(const std::vector<double>& rad, const std::vector<double>& volume, const std::vector<double>& a,
                const std::vector<double>& b, double R, double rho0) {
