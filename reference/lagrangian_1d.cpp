@@ -132,8 +132,8 @@ LagrangianState Lagrangian1D::sized() const {
   return {std::vector<double>(n_ + 1), std::vector<double>(n_ + 1), std::vector<double>(n_)};
 }
 
-double Lagrangian1D::volume(const LagrangianState& s, int k) const {
-  return o_.dim == 3 ? shell_volume<3>(s.r[k], s.r[k + 1]) : shell_volume<2>(s.r[k], s.r[k + 1]);
+double Lagrangian1D::shell_volume(int dim, double ra, double rb) {
+  return dim == 3 ? reference::shell_volume<3>(ra, rb) : reference::shell_volume<2>(ra, rb);
 }
 
 void Lagrangian1D::rate(const LagrangianState& s, LagrangianState& d, double* step_of_zone) {

@@ -57,7 +57,9 @@ class Lagrangian1D {
 
   long steps() const { return steps_; }
   int zones() const { return n_; }
-  double volume(const LagrangianState& s, int k) const;
+  double volume(const LagrangianState& s, int k) const { return shell_volume(o_.dim, s.r[k], s.r[k + 1]); }
+  // c_d (r_b^d - r_a^d), the header's zone volume.
+  static double shell_volume(int dim, double ra, double rb);
   const std::vector<double>& zone_mass() const { return dm_; }
   const std::vector<double>& node_mass() const { return mnode_; }
   const std::vector<double>& enclosed_mass() const { return menc_; }  // M_i

@@ -14,6 +14,7 @@
 #include "reference/sedov.hpp"
 #include "sph/core/vec.hpp"
 #include "sph/kernel/cubic_spline.hpp"
+#include "verification/cases/sedov/errors.hpp"
 #include "verification/harness/result.hpp"
 
 namespace sphv::sedov {
@@ -37,18 +38,6 @@ reference::RadialProfile deposit_blast(double gamma, double E, double rho0, doub
   o.r_out = 4.0 / 3.0 * R, o.zones = zones;
   o.deposit = [r_b](double r) { return sph::CubicSpline<D>::W(r, r_b); };
   return reference::blast_lagrangian(o);
-}
-
-// Sum over the particles with r < 1.2 R of their volumes m/rho times |a - b|, over vol_d(1.2 R)
-// rho0.
-template <int D>
-double ball_l1(const std::vector<double>& rad, const std::vector<double>& volume, const std::vector<double>& a,
-               const std::vector<double>& b, double R, double rho0) {
-  const double ball = (D == 2 ? M_PI : 4.0 / 3.0 * M_PI) * std::pow(1.2 * R, D);
-  double l1 = 0.0;
-  for (std::size_t i = 0; i < rad.size(); ++i)
-    if (rad[i] < 1.2 * R) l1 += volume[i] * std::abs(a[i] - b[i]);
-  return l1 / ball / rho0;
 }
 
 // Fills r.errors["L1_rho_deposit"], its extras and the deposit's curve in the density figure

@@ -53,6 +53,18 @@ inline double kinetic_share(const reference::Sedov& exact, int d) {
   return sigma * alpha * alpha * std::pow(exact.xi0(), d + 2) * sum / cells;
 }
 
+// Sum over the particles with r < 1.2 R of their volumes m/rho times |a - b|, over vol_d(1.2 R)
+// rho0: L1_rho's norm (a, b: the particles' and a reference's densities at their radii).
+template <int D>
+double ball_l1(const std::vector<double>& rad, const std::vector<double>& volume, const std::vector<double>& a,
+               const std::vector<double>& b, double R, double rho0) {
+  const double ball = (D == 2 ? M_PI : 4.0 / 3.0 * M_PI) * std::pow(1.2 * R, D);
+  double l1 = 0.0;
+  for (std::size_t i = 0; i < rad.size(); ++i)
+    if (rad[i] < 1.2 * R) l1 += volume[i] * std::abs(a[i] - b[i]);
+  return l1 / ball / rho0;
+}
+
 // The front of a radial density profile: the mean density of the particles weighted by a tent of
 // half-width one spacing (1/n) around each radius of a grid of quarter-spacing steps on [0, 0.5),
 // and where that profile falls, going outwards from its peak, through half-way between the
@@ -111,12 +123,15 @@ void measure(Result& r, const std::vector<sph::Vec<D>>& x, const std::vector<sph
   for (std::size_t i = 0; i < x.size(); ++i) rad[i] = x[i].norm();
   const Front f = front(rad, rho, rho0, n);
   // L1 density error over the ball r < 1.2 R (shocked gas and some ambient gas), per unit volume
-  // of the ball: sum of particle volumes m / rho times |rho - rho_exact|, over the ball's volume.
-  const double ball = (D == 2 ? M_PI : 4.0 / 3.0 * M_PI) * std::pow(1.2 * R, D);
-  double l1 = 0.0, in_ball = 0.0;
-  for (std::size_t i = 0; i < x.size(); ++i)
-    if (rad[i] < 1.2 * R) l1 += m[i] / rho[i] * std::abs(rho[i] - exact.density(rad[i], E, rho0, t)), ++in_ball;
-  r.errors = {{"L1_rho", l1 / ball / rho0}};
+  // of the ball.
+  std::vector<double> volume(x.size()), rho_exact(x.size());
+  double in_ball = 0.0;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    volume[i] = m[i] / rho[i];
+    rho_exact[i] = rad[i] < 1.2 * R ? exact.density(rad[i], E, rho0, t) : rho0;
+    if (rad[i] < 1.2 * R) ++in_ball;
+  }
+  r.errors = {{"L1_rho", ball_l1<D>(rad, volume, rho, rho_exact, R, rho0)}};
   r.functionals = {{"R_front", f.r_front}, {"rho_peak", f.rho_peak}};
   r.extra["R_front_halfrise"] = f.r_front;
   r.extra["shock_radius_halfrise"] = std::abs(f.r_front - R) / R;
