@@ -6,11 +6,13 @@ Figures are drawn at the size they print: COLUMN wide for one column of a two-co
 Computer Modern at 8 pt and more, the family of the document; the bundle includes them unscaled.
 Fonts are embedded as TrueType (pdf.fonttype 42): no Type 3 font, which journal preflight checks
 reject. Labels carry their formulas as mathtext (report_math)."""
+import functools
 import logging
 
 import matplotlib
 
 matplotlib.use("Agg")
+import matplotlib.mathtext  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402
 import matplotlib.ticker  # noqa: E402
 import numpy as np  # noqa: E402
@@ -28,6 +30,33 @@ plt.rcParams.update({"pdf.fonttype": 42, "ps.fonttype": 42, "font.family": "seri
 # fontTools, which subsets the embedded fonts, warns of the 1990s timestamps in Computer Modern's TrueType files.
 logging.getLogger("fontTools").setLevel(logging.ERROR)
 PNG_DPI = 180  # a COLUMN-wide figure is 595 px on the report's page
+
+
+def share_mathtext_parses():
+    """matplotlib (3.6, Debian's) caches a formula's layout per parser object, 50 at a time, and every
+    figure's renderers make parsers of their own: the tick labels and axis labels that every figure
+    repeats are parsed anew in each, a quarter of the report's time. One cache for all parsers of an
+    output kind (raster or vector) keeps them: the layout depends only on the formula, dpi, font and
+    kind, so the figures are the same to the byte. Where matplotlib's cache is not the expected
+    lru_cache, it is left as it is."""
+    parser = matplotlib.mathtext.MathTextParser
+    parse = getattr(parser._parse_cached, "__wrapped__", None)
+    if parse is None:
+        return
+    one_of_kind = {}
+
+    @functools.lru_cache(4096)
+    def shared(kind, s, dpi, prop):
+        return parse(one_of_kind[kind], s, dpi, prop)
+
+    def parse_cached(self, s, dpi, prop):
+        one_of_kind.setdefault(self._output_type, self)
+        return shared(self._output_type, s, dpi, prop)
+
+    parser._parse_cached = parse_cached
+
+
+share_mathtext_parses()
 
 
 class LogLabels(matplotlib.ticker.LogFormatterSciNotation):
@@ -53,7 +82,8 @@ def save(fig, stem, **margins):
             if isinstance(axis.get_minor_formatter(), matplotlib.ticker.LogFormatter):
                 axis.set_minor_formatter(LogLabels(labelOnlyBase=False, minor_thresholds=(1, 0.5)))
     fig.savefig(file_of(stem, "png"), dpi=PNG_DPI)
-    fig.savefig(file_of(stem, "pdf"), dpi=300)  # the dpi of rasterised particle clouds only
+    # dpi: that of rasterised particle clouds only; no creation date, so that the same figure is the same file.
+    fig.savefig(file_of(stem, "pdf"), dpi=300, metadata={"CreationDate": None})
     plt.close(fig)
     return stem
 
