@@ -378,8 +378,8 @@ def write_bundle(bundle, sweeps, tier, made, results, source_repo, with_runs):
     runs = bundle / "runs.tar.xz"
     runs.unlink(missing_ok=True)
     if with_runs:  # every point's files (particles, logs): large, so only on request
-        with tarfile.open(runs, "w:xz", preset=6) as tar:
-            tar.add(results, arcname="runs")
+        with tarfile.open(runs, "w:xz", preset=6) as tar:  # not the references the points shared (a cache)
+            tar.add(results, arcname="runs", filter=lambda f: None if ".references" in Path(f.name).parts else f)
     (bundle / "provenance.json").write_text(json.dumps(prov, indent=1) + "\n")
     script = bundle / "reproduce.sh"
     script.write_text(reproduce_script(commits, tier, prov["source_sha256"], with_runs))

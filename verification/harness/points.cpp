@@ -14,6 +14,7 @@
 #include <cstring>
 #include <fstream>
 #include <map>
+#include <string_view>
 #include <thread>
 
 #include "build_info.hpp"
@@ -21,6 +22,7 @@
 #include "verification/support/build_id.hpp"
 #include "verification/harness/cost.hpp"
 #include "verification/support/mpi.hpp"
+#include "verification/support/reference_cache.hpp"
 
 extern char** environ;
 
@@ -51,8 +53,10 @@ std::optional<Result> finished(const Point& pt, const Params& p, const std::stri
   }
 }
 
-// A point as a child process `sphv run`, so a crash ends as that point's verdict.
-pid_t spawn(const RunOptions& opt, const Task& t, int threads) {
+// A point as a child process `sphv run`, so a crash ends as that point's verdict. Its environment
+// names the folder where the points of its sweep share their references (support/reference_cache.hpp):
+// beside the levels' folders, one per build (exe_sha256), as another build may compute them otherwise.
+pid_t spawn(const RunOptions& opt, const Task& t, int threads, const std::string& exe_sha256) {
   std::vector<std::string> args = {opt.exe.string(), "--threads", std::to_string(threads), "run", t.c->name,
                                    "--out", t.pt.dir.string(), "--set", "n=" + std::to_string(t.pt.n)};
   for (const auto& s : t.pt.settings) args.push_back(s);
@@ -65,8 +69,16 @@ pid_t spawn(const RunOptions& opt, const Task& t, int threads) {
   const std::string log = (t.pt.dir / "log.txt").string();
   posix_spawn_file_actions_addopen(&fa, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
   posix_spawn_file_actions_adddup2(&fa, 1, 2);
+  std::vector<std::string> env;
+  for (char** e = environ; *e; ++e)
+    if (std::string_view(*e).rfind(std::string(reference_cache_variable) + "=", 0) != 0) env.emplace_back(*e);
+  env.push_back(std::string(reference_cache_variable) + "=" +
+                (t.pt.dir.parent_path() / ".references" / exe_sha256.substr(0, 16)).string());
+  std::vector<char*> envp;
+  for (auto& e : env) envp.push_back(e.data());
+  envp.push_back(nullptr);
   pid_t pid = -1;
-  const int err = posix_spawn(&pid, argv[0], &fa, nullptr, argv.data(), environ);
+  const int err = posix_spawn(&pid, argv[0], &fa, nullptr, argv.data(), envp.data());
   posix_spawn_file_actions_destroy(&fa);
   if (err != 0) throw std::runtime_error("cannot start " + opt.exe.string());
   return pid;
@@ -199,7 +211,7 @@ std::vector<Result> run_points(const std::vector<Task>& tasks, const RunOptions&
         const std::size_t k = mine[next];
         const int threads = threads_of(k), slots = std::min(threads, opt.jobs);
         if (slots > free) break;
-        running[spawn(opt, tasks[k], threads)] = {k, slots, Clock::now(), false};
+        running[spawn(opt, tasks[k], threads, exe_sha256)] = {k, slots, Clock::now(), false};
         free -= slots, ++next;
       }
       int status = 0;

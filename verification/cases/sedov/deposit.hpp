@@ -16,6 +16,7 @@
 #include "sph/kernel/cubic_spline.hpp"
 #include "verification/cases/sedov/errors.hpp"
 #include "verification/harness/result.hpp"
+#include "verification/support/reference_cache.hpp"
 
 namespace sphv::sedov {
 
@@ -30,14 +31,22 @@ inline const char* const deposit_error_def =
 // tier's finest L1_rho_deposit (docs/cases/sedov.md).
 constexpr int deposit_zones = 1600;
 
+// Solved once per sweep (support/reference_cache.hpp): every level poses the same blast.
 template <int D>
 reference::RadialProfile deposit_blast(double gamma, double E, double rho0, double u_ambient, double r_b, double t,
                                        double R, int zones) {
-  reference::BlastOptions o;
-  o.dim = D, o.gamma = gamma, o.E = E, o.rho0 = rho0, o.u_ambient = u_ambient, o.t_end = t;
-  o.r_out = 4.0 / 3.0 * R, o.zones = zones;
-  o.deposit = [r_b](double r) { return sph::CubicSpline<D>::W(r, r_b); };
-  return reference::blast_lagrangian(o);
+  std::string key = "sedov deposit blast (reference/blast_lagrangian), cubic spline deposit: dim " + std::to_string(D) +
+                    ", zones " + std::to_string(zones);
+  for (double v : {gamma, E, rho0, u_ambient, r_b, t, R}) key += " " + key_number(v);
+  const Columns c = cached_reference(key, [&] {
+    reference::BlastOptions o;
+    o.dim = D, o.gamma = gamma, o.E = E, o.rho0 = rho0, o.u_ambient = u_ambient, o.t_end = t;
+    o.r_out = 4.0 / 3.0 * R, o.zones = zones;
+    o.deposit = [r_b](double r) { return sph::CubicSpline<D>::W(r, r_b); };
+    const reference::RadialProfile p = reference::blast_lagrangian(o);
+    return Columns{p.r_node, p.v, p.r_zone, p.rho, p.e};
+  });
+  return {c.at(0), c.at(1), c.at(2), c.at(3), c.at(4)};
 }
 
 // Fills r.errors["L1_rho_deposit"], its extras and the deposit's curve in the density figure
