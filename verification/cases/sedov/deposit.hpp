@@ -5,12 +5,14 @@
 // centre is made from the deposit's gas and remembers its size, and the two solutions differ by
 // extra.deposit_memory (the same L1 between them) at every n. `sphv run` only: a scored
 // snapshot's deposit is its code's.
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
 
 #include "reference/blast_lagrangian.hpp"
 #include "reference/interpolate.hpp"
+#include "reference/lagrangian_1d.hpp"
 #include "reference/sedov.hpp"
 #include "sph/core/vec.hpp"
 #include "sph/kernel/cubic_spline.hpp"
@@ -71,15 +73,13 @@ void measure_deposit(Result& r, const std::vector<sph::Vec<D>>& x, const std::ve
   r.extra["reference_L1_rho_half_zones"] = ball_l1<D>(rad, volume, at_half, at_dep, R, rho0);
   r.extra["deposit_reference_zones"] = deposit_zones;
   // The deposit's memory: the same L1 between the deposit's solution and the point blast's,
-  // summed over the reference's zones inside the ball.
-  const double c_d = D == 2 ? M_PI : 4.0 / 3.0 * M_PI, ball = c_d * std::pow(1.2 * R, D);
+  // summed over the reference's zones inside the ball, their volumes the mesh's own.
+  using reference::Lagrangian1D;
   double memory = 0.0;
-  for (std::size_t k = 0; k + 1 < dep.r_node.size() && dep.r_node[k] < 1.2 * R; ++k) {
-    const double hi = std::min(dep.r_node[k + 1], 1.2 * R);
-    memory += c_d * (std::pow(hi, D) - std::pow(dep.r_node[k], D)) *
+  for (std::size_t k = 0; k + 1 < dep.r_node.size() && dep.r_node[k] < 1.2 * R; ++k)
+    memory += Lagrangian1D::shell_volume(D, dep.r_node[k], std::min(dep.r_node[k + 1], 1.2 * R)) *
               std::abs(dep.rho[k] - exact.density(dep.r_zone[k], E, rho0, t));
-  }
-  r.extra["deposit_memory"] = memory / ball / rho0;
+  r.extra["deposit_memory"] = memory / Lagrangian1D::shell_volume(D, 0.0, 1.2 * R) / rho0;
   for (Figure& f : r.figures)
     if (f.name == "profile_rho") {
       Series line{"the run's finite deposit (1D Lagrangian reference)", {}, {}, "dashed"};
