@@ -129,7 +129,7 @@ TEST_CASE("reference cache: sedov's deposit blast and the Evrard collapse are ke
     auto v = e_base;
     if (k < e_base.size()) v[k] = e_other[k];
     INFO("Evrard input " << k << " changed");
-    const reference::EvrardSolution& cached = sphv::evrard::reference_solution(static_cast<int>(v[0]), v[1], v[2], v[3]);
+    const reference::EvrardSolution cached = sphv::evrard::reference_solution(static_cast<int>(v[0]), v[1], v[2], v[3]);
     reference::EvrardOptions o;
     o.zones = static_cast<int>(v[0]), o.gamma = v[1], o.u0 = v[2], o.t_end = v[3];
     const reference::EvrardSolution solved = reference::evrard_lagrangian(o);

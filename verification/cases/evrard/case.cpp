@@ -69,8 +69,8 @@ Result run(const Params& prm) {
   if (out.verdict != "ok" || sph_e.t.empty()) return r;
 
   const int zones = static_cast<int>(prm.integer("zones"));
-  const auto& ref = evrard::reference_solution(zones, m.gamma, u0, m.controls.t_end);
-  const auto& ref_half = evrard::reference_solution(zones / 2, m.gamma, u0, m.controls.t_end);
+  const auto ref = evrard::reference_solution(zones, m.gamma, u0, m.controls.t_end);
+  const auto ref_half = evrard::reference_solution(zones / 2, m.gamma, u0, m.controls.t_end);
   // Curve differences at the reference's output times, relative to |W(0)| = 2/3 G M^2 / R.
   const double scale = 2.0 / 3.0;
   struct Diff {

@@ -5,9 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <mutex>
 #include <string>
-#include <tuple>
 #include <vector>
 
 #include "reference/evrard_lagrangian.hpp"
@@ -18,34 +16,26 @@
 
 namespace sphv::evrard {
 
-// The 1D reference, computed once per (zones, gamma, u0, t_end) in a process, and once per sweep
-// (support/reference_cache.hpp): every level poses the same collapse.
-inline const reference::EvrardSolution& reference_solution(int zones, double gamma, double u0, double t_end) {
-  static std::mutex mx;
-  static std::map<std::tuple<int, double, double, double>, reference::EvrardSolution> cache;
-  const std::lock_guard<std::mutex> lock(mx);
-  const auto key = std::make_tuple(zones, gamma, u0, t_end);
-  auto it = cache.find(key);
-  if (it == cache.end()) {
-    std::string text = "evrard collapse (reference/evrard_lagrangian): zones " + std::to_string(zones);
-    for (double v : {gamma, u0, t_end}) text += " " + key_number(v);
-    const Columns c = cached_reference(text, [&] {
-      reference::EvrardOptions o;
-      o.zones = zones, o.gamma = gamma, o.u0 = u0, o.t_end = t_end;
-      const reference::EvrardSolution s = reference::evrard_lagrangian(o);
-      const reference::EvrardProfile& e = s.at_end;
-      return Columns{s.t,         s.kinetic,     s.thermal, s.potential, {double(s.steps), s.t_max_compression},
-                     s.r_profile, s.rho_profile, e.r_node,  e.v,         e.r_zone,
-                     e.rho,       e.e};
-    });
-    reference::EvrardSolution s;
-    s.t = c.at(0), s.kinetic = c.at(1), s.thermal = c.at(2), s.potential = c.at(3);
-    s.steps = static_cast<long>(c.at(4).at(0)), s.t_max_compression = c.at(4).at(1);
-    s.r_profile = c.at(5), s.rho_profile = c.at(6);
-    s.at_end = {c.at(7), c.at(8), c.at(9), c.at(10), c.at(11)};
-    it = cache.emplace(key, std::move(s)).first;
-  }
-  return it->second;
+// The 1D reference, solved once per sweep or process (support/reference_cache.hpp): every level
+// poses the same collapse.
+inline reference::EvrardSolution reference_solution(int zones, double gamma, double u0, double t_end) {
+  std::string key = "evrard collapse (reference/evrard_lagrangian): zones " + std::to_string(zones);
+  for (double v : {gamma, u0, t_end}) key += " " + key_number(v);
+  const Columns c = cached_reference(key, [&] {
+    reference::EvrardOptions o;
+    o.zones = zones, o.gamma = gamma, o.u0 = u0, o.t_end = t_end;
+    const reference::EvrardSolution s = reference::evrard_lagrangian(o);
+    const reference::EvrardProfile& e = s.at_end;
+    return Columns{s.t,         s.kinetic,     s.thermal, s.potential, {double(s.steps), s.t_max_compression},
+                   s.r_profile, s.rho_profile, e.r_node,  e.v,         e.r_zone,
+                   e.rho,       e.e};
+  });
+  reference::EvrardSolution s;
+  s.t = c.at(0), s.kinetic = c.at(1), s.thermal = c.at(2), s.potential = c.at(3);
+  s.steps = static_cast<long>(c.at(4).at(0)), s.t_max_compression = c.at(4).at(1);
+  s.r_profile = c.at(5), s.rho_profile = c.at(6);
+  s.at_end = {c.at(7), c.at(8), c.at(9), c.at(10), c.at(11)};
+  return s;
 }
 
 inline const std::map<std::string, std::string> profile_error_defs = {

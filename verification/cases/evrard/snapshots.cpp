@@ -72,15 +72,15 @@ Result score_evrard(const Params& prm, const Snapshot& s) {
   const double gamma = prm.real("gamma");
   const int zones = static_cast<int>(prm.integer("zones"));
   const double t = prm.real("t_end"), u0 = prm.real("u0");
-  auto reference = [&](int z) -> const reference::EvrardSolution& {
+  auto reference = [&](int z) {
     try {
       return evrard::reference_solution(z, gamma, u0, t);
     } catch (const std::invalid_argument& e) {  // the 1D solver's step budget or a zone gone bad
       throw InputError(s.path.string() + ": no 1D reference at its time " + std::to_string(t) + ": " + e.what());
     }
   };
-  const auto& ref = reference(zones);
-  const auto& half = reference(zones / 2);
+  const auto ref = reference(zones);
+  const auto half = reference(zones / 2);
   Result r;
   const auto x = vectors<3>(s, "", who, radial::centre<3>(prm)), v = vectors<3>(s, "v", who);
   const auto u = internal_energy(s, gamma, who);

@@ -79,7 +79,7 @@ void measure_deposit(Result& r, const std::vector<sph::Vec<D>>& x, const std::ve
   for (std::size_t k = 0; k + 1 < dep.r_node.size() && dep.r_node[k] < 1.2 * R; ++k)
     memory += Lagrangian1D::shell_volume(D, dep.r_node[k], std::min(dep.r_node[k + 1], 1.2 * R)) *
               std::abs(dep.rho[k] - exact.density(dep.r_zone[k], E, rho0, t));
-  r.extra["deposit_memory"] = memory / Lagrangian1D::shell_volume(D, 0.0, 1.2 * R) / rho0;
+  r.extra["deposit_memory"] = memory / error_ball<D>(R) / rho0;
   for (Figure& f : r.figures)
     if (f.name == "profile_rho") {
       Series line{"the run's finite deposit (1D Lagrangian reference)", {}, {}, "dashed"};

@@ -53,16 +53,21 @@ inline double kinetic_share(const reference::Sedov& exact, int d) {
   return sigma * alpha * alpha * std::pow(exact.xi0(), d + 2) * sum / cells;
 }
 
+// vol_d(1.2 R): the ball the density's L1 errors are taken over, and their denominator.
+template <int D>
+double error_ball(double R) {
+  return (D == 2 ? M_PI : 4.0 / 3.0 * M_PI) * std::pow(1.2 * R, D);
+}
+
 // Sum over the particles with r < 1.2 R of their volumes m/rho times |a - b|, over vol_d(1.2 R)
 // rho0: L1_rho's norm (a, b: the particles' and a reference's densities at their radii).
 template <int D>
 double ball_l1(const std::vector<double>& rad, const std::vector<double>& volume, const std::vector<double>& a,
                const std::vector<double>& b, double R, double rho0) {
-  const double ball = (D == 2 ? M_PI : 4.0 / 3.0 * M_PI) * std::pow(1.2 * R, D);
   double l1 = 0.0;
   for (std::size_t i = 0; i < rad.size(); ++i)
     if (rad[i] < 1.2 * R) l1 += volume[i] * std::abs(a[i] - b[i]);
-  return l1 / ball / rho0;
+  return l1 / error_ball<D>(R) / rho0;
 }
 
 // The front of a radial density profile: the mean density of the particles weighted by a tent of
