@@ -28,9 +28,9 @@ template <int D, class Lambda>
 struct EnergySymmetric {
   static constexpr Writes writes{.dudt = true};
   Lambda lambda{};
+  void prepare(Particles<D>& p, const Neighbourhood<D>&) { prepare_lambda(lambda, p); }
   void pair(const Particles<D>& p, PairSums<D>& s, const Pair<D>& q) const {
-    s.dudt += 0.5 * p.m[q.j] * lambda.factor(p.p[q.i], p.p[q.j], p.rho[q.i], p.rho[q.j]) *
-                   (q.vi - q.vj).dot(q.gradW);
+    s.dudt += 0.5 * p.m[q.j] * lambda.factor(p, q.i, q.j) * (q.vi - q.vj).dot(q.gradW);
   }
 };
 
