@@ -9,7 +9,7 @@ namespace sph {
 
 // Symmetric pressure factor of (25): P_ij = p_j / (rho_i^(2-l) rho_j^l) + p_i / (rho_i^l rho_j^(2-l)),
 // symmetric in i and j. lambda = 1 gives (23), lambda = 2 gives (26); both are specialised so
-// that they cost no pow(). factor(p, i, j) is the pair loop's: particles i and j's P_ij.
+// that they cost no pow(). factor(p, i, j): the P_ij of particles i and j.
 struct Lambda1 {  // (23): (p_i + p_j) / (rho_i rho_j)
   double factor(double pi, double pj, double ri, double rj) const { return (pi + pj) / (ri * rj); }
   template <int D>
@@ -25,16 +25,10 @@ struct Lambda2 {  // (26): p_i / rho_i^2 + p_j / rho_j^2
   }
 };
 // (25) with any lambda. The pair loop reads rho^lambda and rho^(2 - lambda) of each end from
-// arrays that prepare() fills once an evaluation (two pow() a particle instead of four a pair);
-// they are the values the four-argument factor computes, multiplied and divided in its order, so
-// both give the same P_ij to the bit.
+// arrays that prepare() fills once an evaluation: two pow() a particle instead of four a pair.
 struct LambdaGeneral {
   double lambda = 1.5;
   std::vector<double> rho_l, rho_2l;  // rho_i^lambda, rho_i^(2 - lambda) at the last prepare()
-  double factor(double pi, double pj, double ri, double rj) const {
-    return pj / (std::pow(ri, 2.0 - lambda) * std::pow(rj, lambda)) +
-           pi / (std::pow(ri, lambda) * std::pow(rj, 2.0 - lambda));
-  }
   template <int D>
   void prepare(const Particles<D>& p) {
     const std::size_t n = p.size();

@@ -90,17 +90,25 @@ TEST_CASE("equations of state: pressure and sound speed", "[hydro]") {
 }
 
 // The chapter's (25) reduces to (23) at lambda = 1 and to (26) at lambda = 2, and its lambda = 0
-// is p_j / rho_i^2 + p_i / rho_j^2 (the weights swap sides). The general form is computed with
-// pow(), the special ones without: a swapped exponent or side shows at lambda = 0 and 2.
-// Tolerance 1e-14 relative: a few roundings of pow() and two divisions.
+// is p_j / rho_i^2 + p_i / rho_j^2 (the weights swap sides). The general form is the pair loop's,
+// with the powers prepare() takes by pow(); the special ones take none: a swapped exponent or side
+// shows at lambda = 0 and 2. Tolerance 1e-14 relative: a few roundings of pow() and two divisions.
 TEST_CASE("(25) reduces to (23) at lambda 1 and (26) at lambda 2", "[hydro]") {
   std::mt19937 rng(25);
   std::uniform_real_distribution<double> u(0.1, 10.0);
+  auto general = [](double lambda, const sph::Particles<1>& p) {
+    sph::LambdaGeneral g{lambda};
+    g.prepare(p);
+    return g.factor(p, 0, 1);
+  };
   for (int k = 0; k < 100; ++k) {
-    const double pi = u(rng), pj = u(rng), ri = u(rng), rj = u(rng);
-    CHECK(sph::LambdaGeneral{1.0}.factor(pi, pj, ri, rj) == Approx(sph::Lambda1{}.factor(pi, pj, ri, rj)).epsilon(1e-14));
-    CHECK(sph::LambdaGeneral{2.0}.factor(pi, pj, ri, rj) == Approx(sph::Lambda2{}.factor(pi, pj, ri, rj)).epsilon(1e-14));
-    CHECK(sph::LambdaGeneral{0.0}.factor(pi, pj, ri, rj) == Approx(pj / (ri * ri) + pi / (rj * rj)).epsilon(1e-14));
+    sph::Particles<1> p;
+    p.resize(2);
+    p.p = {u(rng), u(rng)}, p.rho = {u(rng), u(rng)};
+    const double pi = p.p[0], pj = p.p[1], ri = p.rho[0], rj = p.rho[1];
+    CHECK(general(1.0, p) == Approx(sph::Lambda1{}.factor(p, 0, 1)).epsilon(1e-14));
+    CHECK(general(2.0, p) == Approx(sph::Lambda2{}.factor(p, 0, 1)).epsilon(1e-14));
+    CHECK(general(0.0, p) == Approx(pj / (ri * ri) + pi / (rj * rj)).epsilon(1e-14));
   }
 }
 

@@ -4,6 +4,7 @@
 // shock's position), the figure of particle values against the exact curve, and the per-level
 // gates of a sweep.
 #include <algorithm>
+#include <cmath>
 #include <functional>
 #include <string>
 #include <vector>
@@ -13,6 +14,9 @@
 #include "verification/harness/sweep.hpp"
 
 namespace sphv::radial {
+
+// Volume of the d-ball of radius r.
+inline double ball_volume(int d, double r) { return (d == 1 ? 2.0 : d == 2 ? M_PI : 4.0 / 3.0 * M_PI) * std::pow(r, d); }
 
 // A run's result before its measurements: particle count, verdict "stable" when the run reached
 // t_end, else the integrator's verdict (the first step and particle that went bad).

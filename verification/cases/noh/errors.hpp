@@ -13,9 +13,6 @@
 
 namespace sphv::noh {
 
-// Volume of the d-ball of radius r.
-inline double ball_volume(int d, double r) { return (d == 1 ? 2.0 : d == 2 ? M_PI : 4.0 / 3.0 * M_PI) * std::pow(r, d); }
-
 inline const std::map<std::string, std::string> error_defs = {
     {"rho_post", "|mean(rho_i over particles with R_s/4 < r_i < 3 R_s/4) - rho_post| / rho_post, R_s = t/3 (gamma 5/3), "
                  "rho_post = 4^d rho0 (exact Noh); unweighted particle mean"},
@@ -59,7 +56,7 @@ void measure(Result& r, const std::vector<sph::Vec<D>>& x, const std::vector<sph
     swept += m[i] * std::clamp(1.0 + vr, 0.0, 1.0);
     outward += m[i] * std::max(vr, 0.0);
   }
-  const double swept_exact = ball_volume(D, Rs + t);
+  const double swept_exact = radial::ball_volume(D, Rs + t);
   // Shock position: the radius where the binned density falls, going outwards, through the
   // midpoint of the exact post-shock and pre-shock (4^(d-1) rho0 for gamma = 5/3) values. The bins
   // are half the initial spacing (m / rho0)^(1/d) wide (the median mass, rho0 = 1), so that the

@@ -21,7 +21,7 @@ inline double gas_radius(double t_end, double h0) { return 1.1 * 4.0 / 3.0 * t_e
 // settings are validated with the default n before its levels.
 inline void check_size(const Params& p) {
   const long dim = p.integer("dim"), n = p.integer("n");
-  const double N = ball_volume(static_cast<int>(dim), gas_radius(p.real("t_end"), p.real("hfact") / n)) * std::pow(double(n), dim);
+  const double N = radial::ball_volume(static_cast<int>(dim), gas_radius(p.real("t_end"), p.real("hfact") / n)) * std::pow(double(n), dim);
   const double cap = p.real("max_particles");
   if (N > cap)
     throw InputError("noh: n = " + std::to_string(n) + " in " + std::to_string(dim) + "D means ~" +

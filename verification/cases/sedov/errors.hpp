@@ -56,7 +56,7 @@ inline double kinetic_share(const reference::Sedov& exact, int d) {
 // vol_d(1.2 R): the ball the density's L1 errors are taken over, and their denominator.
 template <int D>
 double error_ball(double R) {
-  return (D == 2 ? M_PI : 4.0 / 3.0 * M_PI) * std::pow(1.2 * R, D);
+  return radial::ball_volume(D, 1.2 * R);
 }
 
 // Sum over the particles with r < 1.2 R of their volumes m/rho times |a - b|, over vol_d(1.2 R)
