@@ -11,17 +11,15 @@ namespace sph {
 // symmetric in i and j. lambda = 1 gives (23), lambda = 2 gives (26); both are specialised so
 // that they cost no pow(). factor(p, i, j): the P_ij of particles i and j.
 struct Lambda1 {  // (23): (p_i + p_j) / (rho_i rho_j)
-  double factor(double pi, double pj, double ri, double rj) const { return (pi + pj) / (ri * rj); }
   template <int D>
   double factor(const Particles<D>& p, std::size_t i, std::size_t j) const {
-    return factor(p.p[i], p.p[j], p.rho[i], p.rho[j]);
+    return (p.p[i] + p.p[j]) / (p.rho[i] * p.rho[j]);
   }
 };
 struct Lambda2 {  // (26): p_i / rho_i^2 + p_j / rho_j^2
-  double factor(double pi, double pj, double ri, double rj) const { return pi / (ri * ri) + pj / (rj * rj); }
   template <int D>
   double factor(const Particles<D>& p, std::size_t i, std::size_t j) const {
-    return factor(p.p[i], p.p[j], p.rho[i], p.rho[j]);
+    return p.p[i] / (p.rho[i] * p.rho[i]) + p.p[j] / (p.rho[j] * p.rho[j]);
   }
 };
 // (25) with any lambda. The pair loop reads rho^lambda and rho^(2 - lambda) of each end from
