@@ -50,12 +50,14 @@ std::string differences(const std::map<std::string, double>& a, const std::map<s
 // gives the same verdict, errors and functionals bit for bit. Gate scenes are mostly smaller than
 // sph::parallel_threshold, so the second run lowers it to 0 and every threaded loop forks. Not for
 // the cases below: their smallest levels take thousands of steps of a few hundred particles, and
-// forking every loop of every step cost 15-37 s more each (measured; 170 s over all gates). Their
-// rerun keeps the threshold and checks the loops above it only; the loops they share (pair loop,
-// EOS, integrators, Courant step, verdict, (50) iteration, neighbour lists) fork in sedov, evrard
-// (with the gravity tree), sod, heat_stability and the other gates.
+// forking every loop of every step costs 6-37 s more each (measured), most of it sleeping and
+// waking the second thread (OMP_WAIT_POLICY=passive). Their rerun keeps the threshold and checks
+// the loops above it only; the loops they share (pair loop, EOS, integrators, Courant step,
+// verdict, (50) iteration, neighbour lists) fork in sedov, evrard (with the gravity tree), sod,
+// heat_stability and the other gates. extreme_tubes runs sod's 1D tube scenes (forked in sod's
+// eleven variants) and the chapter scheme (forked in sedov).
 const std::set<std::string> fork_bound = {"noh", "conservation", "stability_map_hydro", "extreme_degenerate",
-                                          "stability_map_heat"};
+                                          "stability_map_heat", "extreme_tubes"};
 void require_thread_independent(const sphv::Case& c, const std::vector<std::string>& settings, const sphv::Sweep& s) {
   auto at_smallest = settings;
   at_smallest.push_back("n=" + std::to_string(s.levels.front()));
