@@ -31,5 +31,5 @@ rm -f "$tex_log"
 # Tests run side by side with OpenMP inside: threads that wait should sleep, not spin.
 export OMP_WAIT_POLICY=${OMP_WAIT_POLICY:-passive}
 # One test more than there are cores: some tests wait (on a hung point's timeout, on git, on
-# pdflatex's files) and the extra one uses those waits (2 cores: 220 s -> 204 s, measured).
+# pdflatex's files) and the extra one uses those waits.
 ctest --test-dir "$SPHV_BUILD_DIR" --output-on-failure -j "$(( $(nproc) + 1 ))" --output-junit junit.xml "$@"
