@@ -50,7 +50,7 @@ std::string differences(const std::map<std::string, double>& a, const std::map<s
 // gives the same verdict, errors and functionals bit for bit. Gate scenes are mostly smaller than
 // sph::parallel_threshold, so the second run lowers it to 0 and every threaded loop forks. Not for
 // the cases below: their smallest levels take thousands of steps of a few hundred particles, and
-// forking every loop of every step costs several times the run itself, most of it sleeping and
+// forking every loop of every step costs half the run again or more, most of it sleeping and
 // waking the second thread (OMP_WAIT_POLICY=passive). Their rerun keeps the threshold and checks
 // the loops above it only; the loops they share (pair loop, EOS, integrators, Courant step,
 // verdict, (50) iteration, neighbour lists) fork in sedov, evrard (with the gravity tree), sod,
